@@ -1,0 +1,86 @@
+// Cost of each friction law per evaluation, on one fixed seeded input set (bench/law_input_set.h),
+// with each law's largest error against `exact` on that set as counters.
+//
+//   build/bench/friction_bench                       # all laws
+//   build/bench/friction_bench --benchmark_filter='BM_law/(exact|pade-printed)$'
+//
+// One iteration = one evaluation, cycling through the set, so the reported time is the mean cost
+// per evaluation over the set. Ratios between laws are only meaningful within one run.
+
+#include <benchmark/benchmark.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "bench/law_input_set.h"
+#include "friction/registry.h"
+
+namespace frictionlab::bench {
+namespace {
+
+// exact-reference costs milliseconds per call: it is timed (and checked) on a prefix of the set.
+constexpr std::size_t kReferenceSubset = 64;
+
+struct MaxErrors {
+  double F1 = 0.0, F2 = 0.0, M = 0.0;
+};
+
+// Largest |law - exact| over `set`, per kN (forces) and kNa (moment); +inf if any output is not
+// finite (e.g. the real pole of the printed F2).
+MaxErrors max_errors(const friction::FrictionLaw& law, const friction::FrictionLaw& exact,
+                     const std::vector<friction::ContactInput>& set) {
+  MaxErrors e;
+  const auto worst = [](double& m, double x, double ref) {
+    const double d = std::abs(x - ref);
+    m = std::isfinite(x) ? std::max(m, d) : std::numeric_limits<double>::infinity();
+  };
+  for (const auto& in : set) {
+    const auto f = law.evaluate(in);
+    const auto g = exact.evaluate(in);
+    const double kN = in.k * in.N;
+    worst(e.F1, f.F1 / kN, g.F1 / kN);
+    worst(e.F2, f.F2 / kN, g.F2 / kN);
+    worst(e.M, f.M / (kN * in.a), g.M / (kN * in.a));
+  }
+  return e;
+}
+
+void register_law(const std::string& name, const std::vector<friction::ContactInput>& full) {
+  const bool slow = name == "exact-reference";
+  auto set = std::make_shared<std::vector<friction::ContactInput>>(
+      full.begin(), full.begin() + static_cast<std::ptrdiff_t>(slow ? kReferenceSubset : full.size()));
+  std::shared_ptr<friction::FrictionLaw> law = friction::make_law(name);
+  const auto exact = friction::make_law("exact");
+  const MaxErrors err = max_errors(*law, *exact, *set);
+
+  auto* b = benchmark::RegisterBenchmark(("BM_law/" + name).c_str(), [law, set, err](benchmark::State& state) {
+    std::size_t i = 0;
+    for (auto _ : state) {
+      benchmark::DoNotOptimize(law->evaluate((*set)[i]));
+      if (++i == set->size()) i = 0;
+    }
+    state.SetItemsProcessed(state.iterations());
+    state.counters["inputs"] = static_cast<double>(set->size());
+    state.counters["max_err_F1"] = err.F1;
+    state.counters["max_err_F2"] = err.F2;
+    state.counters["max_err_M"] = err.M;
+  });
+  if (slow) b->Iterations(2 * kReferenceSubset);
+}
+
+}  // namespace
+}  // namespace frictionlab::bench
+
+int main(int argc, char** argv) {
+  const auto set = frictionlab::bench::law_input_set();
+  for (const auto& info : frictionlab::friction::list_laws()) frictionlab::bench::register_law(info.name, set);
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}

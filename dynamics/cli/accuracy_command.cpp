@@ -1,0 +1,95 @@
+// `frictionlab accuracy`: the accuracy study of every friction law against `exact` (issue 4, §4).
+// A thin layer over bench/accuracy: parse the options, run the study, write the files and figures.
+
+#include <chrono>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "bench/accuracy/plots.h"
+#include "bench/accuracy/report.h"
+#include "bench/accuracy/study.h"
+#include "dynamics/cli/commands.h"
+
+namespace frictionlab::cli {
+namespace {
+
+struct AccuracyOptions {
+  std::string out;
+  std::vector<std::string> laws;
+  accuracy::GridSpec grid;
+  std::size_t threads = 0;
+  bool no_plots = false;
+  std::string command;  // as typed, for the provenance line of the tables
+};
+
+void run(const AccuracyOptions& opt) {
+  if (opt.out.empty()) throw std::invalid_argument("--out is empty: name the output folder");
+  const auto t0 = std::chrono::steady_clock::now();
+  accuracy::StudyOptions so;
+  so.grid = opt.grid;
+  so.laws = opt.laws;
+  so.threads = opt.threads;
+  so.progress = &std::cerr;
+  const auto study = accuracy::run_study(so);
+
+  accuracy::RunInfo info = accuracy::describe_this_run();
+  info.command = opt.command;
+  info.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const std::filesystem::path dir(opt.out);
+  accuracy::write_study_files(study, dir, info, &std::cerr);
+  accuracy::PlotOptions po;
+  po.draw = !opt.no_plots;
+  (void)accuracy::write_plots(study, dir, po, &std::cerr);
+  const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  std::cerr << "accuracy: done in " << total << " s; tables in " << (dir / "accuracy_tables.md").string()
+            << std::endl;
+}
+
+}  // namespace
+
+void register_accuracy_command(CLI::App& app) {
+  auto opt = std::make_shared<AccuracyOptions>();
+  auto* cmd = app.add_subcommand(
+      "accuracy",
+      "Accuracy study: every law against `exact` on a grid of slip ratio s = U/(a|Omega|), axis\n"
+      "ratio mu = b/a, orientation psi and sign(Omega); writes CSV tables, markdown tables and\n"
+      "gnuplot figures under --out (see DIR/README.md)");
+  cmd->add_option("--out", opt->out, "output folder (created; existing files are replaced)")->required();
+  cmd->add_option("--laws", opt->laws,
+                  "comma-separated laws to compare with exact (default: every registered law but exact "
+                  "and exact-reference; exact-reference only on a small grid)")
+      ->delimiter(',');
+  cmd->add_option("--s-points", opt->grid.s_points, "slip ratios, log-spaced over [1e-3, 1e3] (>= 2)")
+      ->capture_default_str();
+  cmd->add_option("--mu-points", opt->grid.mu_points, "axis ratios b/a, evenly over [0.05, 1] (>= 2)")
+      ->capture_default_str();
+  cmd->add_option("--psi-points", opt->grid.psi_points,
+                  "orientations, evenly over [0, pi] (odd, >= 3: 0, pi/2, pi are nodes)")
+      ->capture_default_str();
+  cmd->add_option("--threads", opt->threads, "worker threads (0: one per hardware thread)")
+      ->capture_default_str();
+  cmd->add_flag("--no-plots", opt->no_plots, "write the gnuplot data and scripts but do not run gnuplot");
+  cmd->callback([opt] {
+    // The command as a reader can retype it (options left at their defaults are omitted).
+    const accuracy::GridSpec defaults;
+    std::ostringstream line;
+    line << "frictionlab accuracy --out " << opt->out;
+    if (!opt->laws.empty()) {
+      line << " --laws ";
+      for (std::size_t i = 0; i < opt->laws.size(); ++i) line << (i ? "," : "") << opt->laws[i];
+    }
+    if (opt->grid.s_points != defaults.s_points) line << " --s-points " << opt->grid.s_points;
+    if (opt->grid.mu_points != defaults.mu_points) line << " --mu-points " << opt->grid.mu_points;
+    if (opt->grid.psi_points != defaults.psi_points) line << " --psi-points " << opt->grid.psi_points;
+    if (opt->no_plots) line << " --no-plots";
+    opt->command = line.str();
+    run(*opt);
+  });
+}
+
+}  // namespace frictionlab::cli

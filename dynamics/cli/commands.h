@@ -1,0 +1,13 @@
+#pragma once
+// The subcommands of `frictionlab`; each registers itself on the application, in its own file.
+
+#include <CLI/CLI.hpp>
+
+namespace frictionlab::cli {
+
+void register_laws_command(CLI::App& app);      // laws_command.cpp
+void register_friction_command(CLI::App& app);  // friction_command.cpp
+void register_simulate_command(CLI::App& app);  // simulate_command.cpp
+void register_accuracy_command(CLI::App& app);  // accuracy_command.cpp
+
+}  // namespace frictionlab::cli

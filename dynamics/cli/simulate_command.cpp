@@ -1,0 +1,117 @@
+// `frictionlab simulate SCENARIO.toml [--law NAME] [--set key=value]... --out DIR`: one run of the
+// body-on-plane dynamics (docs/dynamics.md). Writes DIR/trajectory.csv, DIR/summary.json and
+// DIR/scenario.toml; prints one line on stdout. Exit code 0 when the run ends by t_end, rest or
+// rolling; 3 when it stops early (non-finite, law-error, integrator-failure, max-steps,
+// interrupted) — its outputs are still written and the summary says why.
+
+#include <unistd.h>
+
+#include <atomic>
+#include <chrono>
+#include <csignal>
+#include <cstdio>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "dynamics/cli/commands.h"
+#include "dynamics/scenario.h"
+#include "dynamics/scenario_run.h"
+#include "friction/registry.h"
+
+namespace frictionlab::cli {
+namespace {
+
+constexpr int kExitStoppedEarly = 3;
+constexpr double kProgressRefreshSeconds = 0.1;
+constexpr int kProgressBarWidth = 40;
+
+std::atomic<bool> g_interrupted{false};
+extern "C" void on_sigint(int) { g_interrupted.store(true); }
+
+// A one-line progress bar in simulated time, on stderr (only used when stderr is a terminal).
+class ProgressBar final : public dynamics::Observer {
+ public:
+  explicit ProgressBar(double t_end) : t_end_(t_end) {}
+  ~ProgressBar() override {
+    if (drawn_) std::fputs("\r\033[K", stderr);
+  }
+  ProgressBar(const ProgressBar&) = delete;
+  ProgressBar& operator=(const ProgressBar&) = delete;
+
+  void sample(const dynamics::Sample&) override {}
+  void step(double t) override {
+    const auto now = std::chrono::steady_clock::now();
+    if (drawn_ && std::chrono::duration<double>(now - last_).count() < kProgressRefreshSeconds) return;
+    last_ = now;
+    drawn_ = true;
+    const double f = std::min(1.0, t / t_end_);
+    const int filled = static_cast<int>(f * kProgressBarWidth);
+    std::string bar(static_cast<std::size_t>(filled), '#');
+    bar.resize(kProgressBarWidth, '.');
+    std::fprintf(stderr, "\r[%s] t = %.4g / %.4g s", bar.c_str(), t, t_end_);
+    std::fflush(stderr);
+  }
+
+ private:
+  double t_end_;
+  bool drawn_ = false;
+  std::chrono::steady_clock::time_point last_{};
+};
+
+struct SimulateOptions {
+  std::string scenario;
+  std::string law;
+  std::vector<std::string> set;
+  std::string out;
+};
+
+void run(const SimulateOptions& opt) {
+  std::vector<std::string> overrides = opt.set;
+  if (!opt.law.empty()) overrides.push_back("contact.law=" + opt.law);
+  const dynamics::Scenario scenario = dynamics::load_scenario(opt.scenario, overrides);
+  const auto law = friction::make_law(scenario.law);
+
+  std::unique_ptr<ProgressBar> bar;
+  if (isatty(STDERR_FILENO)) bar = std::make_unique<ProgressBar>(scenario.run.t_end);
+  g_interrupted.store(false);
+  auto* previous = std::signal(SIGINT, on_sigint);
+  dynamics::ScenarioRun result;
+  try {
+    result = dynamics::run_scenario(scenario, *law, opt.out, bar.get(), &g_interrupted);
+  } catch (...) {
+    std::signal(SIGINT, previous);
+    throw;
+  }
+  std::signal(SIGINT, previous);
+  bar.reset();
+
+  const dynamics::RunSummary& s = result.summary;
+  const std::string reason(dynamics::to_string(s.reason));
+  std::printf("%s: %s at t = %.6g s; %ld steps, %ld RHS calls, %.3g s wall; wrote %s, %s\n",
+              scenario.name.c_str(), reason.c_str(), s.t_final, s.steps, s.rhs_calls, s.wall_time,
+              result.trajectory_csv.c_str(), result.summary_json.c_str());
+  std::fflush(stdout);
+  const bool normal = s.reason == dynamics::Termination::t_end || s.reason == dynamics::Termination::rest ||
+                      s.reason == dynamics::Termination::rolling;
+  if (!normal) {
+    std::fprintf(stderr, "frictionlab: simulate: the run stopped early (%s): %s\n", reason.c_str(),
+                 s.message.c_str());
+    throw CLI::RuntimeError(kExitStoppedEarly);
+  }
+}
+
+}  // namespace
+
+void register_simulate_command(CLI::App& app) {
+  auto opt = std::make_shared<SimulateOptions>();
+  auto* cmd = app.add_subcommand("simulate", "Integrate the motion of a body of revolution on a Hertz plane");
+  cmd->add_option("scenario", opt->scenario, "Scenario file (TOML; see docs/dynamics.md)")->required();
+  cmd->add_option("--law", opt->law, "Friction law (overrides contact.law; see `frictionlab laws`)");
+  cmd->add_option("--set", opt->set, "Override a scenario key, e.g. --set run.t_end=2 (repeatable)")
+      ->allow_extra_args(false);
+  cmd->add_option("--out", opt->out, "Output directory (created if needed)")->required();
+  cmd->callback([opt] { run(*opt); });
+}
+
+}  // namespace frictionlab::cli

@@ -1,0 +1,89 @@
+#include "dynamics/equations_of_motion.h"
+
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+namespace frictionlab::dynamics {
+
+BodyOnPlane::BodyOnPlane(Body body, const PlaneContact& plane, const friction::FrictionLaw& law)
+    : body_(std::move(body)),
+      plane_(plane),
+      law_(law),
+      geometry_(body_.profile, body_.com),
+      inertia_(body_.A, body_.A, body_.C),
+      inv_inertia_(1.0 / body_.A, 1.0 / body_.A, 1.0 / body_.C) {
+  plane_.validate();
+}
+
+ContactState BodyOnPlane::contact_state(const StateVector& x) const {
+  ContactState c;
+  c.gamma = vertical(x).normalized();
+  const Eigen::Vector3d v = velocity(x);
+  const Eigen::Vector3d w = angular_velocity(x);
+  const double eps = height(x);
+
+  c.point = geometry_.contact_point(c.gamma);
+  c.u = v + w.cross(c.point.r);
+  const Eigen::Vector3d slip = c.u - c.u.dot(c.gamma) * c.gamma;
+  c.U = slip.norm();
+  c.Omega = w.dot(c.gamma);
+  c.in_contact = eps < 0.0;
+  c.N = plane_.normal_force(eps);
+
+  const PatchShape patch = ContactGeometry::patch(c.point, c.gamma, c.in_contact ? -eps : 0.0);
+  // Below the smallest normal double the slip direction is noise: treat it as zero slip, e1 = major.
+  if (c.U >= std::numeric_limits<double>::min()) {
+    c.e1 = slip / c.U;
+  } else {
+    c.U = 0.0;
+    c.e1 = patch.major;
+  }
+  if (patch.circle) {
+    c.psi = 0.0;
+  } else {
+    const Eigen::Vector3d e2 = c.gamma.cross(c.e1);
+    c.psi = std::atan2(patch.major.dot(e2), patch.major.dot(c.e1));
+    if (c.psi < 0.0) c.psi += std::numbers::pi;  // the major axis is a line: psi in [0, pi)
+    if (c.psi >= std::numbers::pi) c.psi -= std::numbers::pi;
+  }
+
+  c.force = c.N * c.gamma;
+  c.torque = c.point.r.cross(c.force);
+  if (c.N > 0.0) {
+    c.a = patch.a;
+    c.b = patch.b;
+    c.friction = law_.evaluate({c.U, c.Omega, c.a, c.b, c.psi, c.N, plane_.k});
+    const Eigen::Vector3d e2 = c.gamma.cross(c.e1);
+    const Eigen::Vector3d F = -c.friction.F1 * c.e1 - c.friction.F2 * e2;  // Eq. (7)
+    c.force += F;
+    c.torque += c.point.r.cross(F) - c.friction.M * c.gamma;
+  }
+  return c;
+}
+
+void BodyOnPlane::operator()(double /*t*/, const StateVector& x, StateVector& dxdt) const {
+  const ContactState c = contact_state(x);
+  const Eigen::Vector3d v = velocity(x);
+  const Eigen::Vector3d w = angular_velocity(x);
+  const Eigen::Vector3d Jw = inertia_.cwiseProduct(w);
+  velocity(dxdt) = -w.cross(v) - plane_.g * c.gamma + c.force / body_.mass;              // Eq. (2)
+  angular_velocity(dxdt) = inv_inertia_.cwiseProduct(c.torque - w.cross(Jw));           // Eq. (3)
+  vertical(dxdt) = vertical(x).cross(w);                                                // Eq. (4)
+  height(dxdt) = c.u.dot(c.gamma);                                                      // Eq. (5)
+  slide_work(dxdt) = c.friction.F1 * c.U;
+  spin_work(dxdt) = c.friction.M * c.Omega;
+}
+
+double BodyOnPlane::kinetic_energy(const StateVector& x) const {
+  const Eigen::Vector3d w = angular_velocity(x);
+  return 0.5 * body_.mass * velocity(x).squaredNorm() + 0.5 * w.dot(inertia_.cwiseProduct(w));
+}
+
+double BodyOnPlane::energy(const StateVector& x, const ContactState& c) const {
+  const double eps = height(x);
+  const double h = eps - c.point.r.dot(c.gamma);  // height of the centre of mass
+  return kinetic_energy(x) + body_.mass * plane_.g * h + plane_.spring_energy(eps);
+}
+
+}  // namespace frictionlab::dynamics

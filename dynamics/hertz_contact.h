@@ -1,0 +1,29 @@
+#pragma once
+// The compliant plane: Hertz normal force, eq. (6), its potential, and the friction coefficient.
+
+#include <cmath>
+
+namespace frictionlab::dynamics {
+
+/// Parameters of the plane and of gravity. SI units.
+struct PlaneContact {
+  double k = 0.0;        ///< Coulomb friction coefficient, dimensionless, finite, >= 0
+  double lambda = 0.0;   ///< Hertz stiffness, N/m^(3/2), finite, > 0
+  double g = 9.81;       ///< gravitational acceleration, m/s^2, finite, >= 0
+
+  /// Throws std::invalid_argument naming the scenario key (contact.k, ...) and the rule.
+  void validate() const;
+
+  /// Eq. (6): N = lambda |eps|^(3/2) for eps < 0, else 0 (N).
+  [[nodiscard]] double normal_force(double eps) const {
+    return eps < 0.0 ? lambda * (-eps) * std::sqrt(-eps) : 0.0;
+  }
+  /// The Hertz spring energy (2/5) lambda |eps|^(5/2) for eps < 0, else 0 (J): dV/d|eps| = N.
+  [[nodiscard]] double spring_energy(double eps) const {
+    return eps < 0.0 ? 0.4 * lambda * eps * eps * std::sqrt(-eps) : 0.0;
+  }
+  /// The static compression under a weight W (N): eps with N(eps) = W, i.e. -(W/lambda)^(2/3) (m).
+  [[nodiscard]] double static_height(double weight) const { return -std::cbrt((weight / lambda) * (weight / lambda)); }
+};
+
+}  // namespace frictionlab::dynamics

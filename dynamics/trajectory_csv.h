@@ -1,0 +1,50 @@
+#pragma once
+// The trajectory as CSV, one row per sample (dynamics/observer.h), columns in this order
+// (SI units; vectors in the body frame; docs/dynamics.md §6):
+//
+//   t          s      time
+//   gamma1..3  -      upward unit vertical (normalised, as the forces see it)
+//   omega1..3  1/s    angular velocity
+//   v1..3      m/s    velocity of the centre of mass
+//   eps        m      height of the contact point over the plane (< 0: penetration)
+//   N          N      normal force, eq. (6)
+//   U          m/s    slip speed of the contact point
+//   Omega      1/s    spin omega.gamma
+//   F1, F2     N      friction force components, F = -F1 e1 - F2 e2
+//   M          N m    friction torque, -M gamma
+//   a, b       m      patch semi-axes (0 out of contact)
+//   psi        rad    angle from the slip direction e1 to the major axis, [0, pi)
+//   energy     J      total mechanical energy (kinetic + gravity + Hertz spring)
+//   kinetic    J      kinetic energy
+//   W_slide    J      work done against sliding friction so far, ∫ F1 U dt
+//   W_spin     J      work done against spinning friction so far, ∫ M Omega dt
+//   in_contact 0/1    eps < 0
+//
+// Numbers are written in the shortest form that reads back to the same double.
+
+#include <array>
+#include <ostream>
+#include <string_view>
+
+#include "dynamics/observer.h"
+
+namespace frictionlab::dynamics {
+
+inline constexpr std::array<std::string_view, 25> kTrajectoryColumns = {
+    "t",  "gamma1", "gamma2", "gamma3", "omega1", "omega2", "omega3",  "v1",     "v2",
+    "v3", "eps",    "N",      "U",      "Omega",  "F1",     "F2",      "M",      "a",
+    "b",  "psi",    "energy", "kinetic", "W_slide", "W_spin", "in_contact"};
+
+class TrajectoryCsv final : public Observer {
+ public:
+  /// Writes the header at once. The stream must outlive the writer.
+  explicit TrajectoryCsv(std::ostream& out);
+  void sample(const Sample& s) override;
+  [[nodiscard]] long rows() const { return rows_; }
+
+ private:
+  std::ostream& out_;
+  long rows_ = 0;
+};
+
+}  // namespace frictionlab::dynamics

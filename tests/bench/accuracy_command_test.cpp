@@ -1,0 +1,60 @@
+// `frictionlab accuracy`, run as a user runs it: a tiny study writes its files; bad options give
+// one error line and a non-zero exit.
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <string>
+
+#include "tests/cli/cli_runner.h"
+
+namespace frictionlab::testing {
+namespace {
+
+std::size_t count_lines(const std::string& s) {
+  return static_cast<std::size_t>(std::count(s.begin(), s.end(), '\n'));
+}
+
+std::filesystem::path temp_out(const char* tag) {
+  return std::filesystem::temp_directory_path() /
+         (std::string("frictionlab_accuracy_cmd_") + tag + "_" + std::to_string(::getpid()));
+}
+
+TEST(AccuracyCommand, TinyStudyWritesTheFiles) {
+  const auto out = temp_out("ok");
+  const auto r = run_frictionlab("accuracy --out " + out.string() +
+                                 " --laws pade-printed --s-points 5 --mu-points 2 --psi-points 3 --no-plots");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.out, "");  // progress goes to stderr
+  EXPECT_NE(r.err.find("accuracy: pade-printed"), std::string::npos) << r.err;
+  for (const char* f : {"summary.csv", "summary_by_mu.csv", "summary_by_region.csv", "accuracy_tables.md",
+                        "README.md", "points/exact.csv", "points/pade-printed.csv",
+                        "plots/heat_pade-printed.gp"}) {
+    EXPECT_TRUE(std::filesystem::exists(out / f)) << f;
+  }
+  std::filesystem::remove_all(out);
+}
+
+void expect_one_line_error(const std::string& args, const std::string& fragment) {
+  const auto r = run_frictionlab(args);
+  EXPECT_NE(r.exit_code, 0) << args;
+  EXPECT_EQ(count_lines(r.err), 1u) << r.err;
+  EXPECT_NE(r.err.find(fragment), std::string::npos) << r.err;
+}
+
+TEST(AccuracyCommand, BadOptionsGiveOneLineAndNonZeroExit) {
+  const std::string out = " --out " + temp_out("bad").string();
+  expect_one_line_error("accuracy" + out + " --s-points 1", "s points = 1 is invalid");
+  expect_one_line_error("accuracy" + out + " --psi-points 24", "psi points = 24 is invalid");
+  expect_one_line_error("accuracy" + out + " --laws pade-printed,nope", "unknown friction law 'nope'");
+  expect_one_line_error("accuracy" + out + " --laws exact-reference", "too slow");
+  EXPECT_FALSE(std::filesystem::exists(temp_out("bad")));
+  const auto missing = run_frictionlab("accuracy --s-points 5");
+  EXPECT_NE(missing.exit_code, 0);
+  EXPECT_NE(missing.err.find("--out is required"), std::string::npos) << missing.err;
+}
+
+}  // namespace
+}  // namespace frictionlab::testing

@@ -1,0 +1,133 @@
+#include "dynamics/scenario.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+
+namespace frictionlab::dynamics {
+namespace {
+
+const char* kGood = R"(
+name = "test"
+[body]
+profile = "sphere"
+radius = 0.05
+mass = 1
+[contact]
+k = 0.2
+lambda = 1e7
+[initial]
+gamma = [0, 0, 1]
+omega = [0, 0, 20]
+eps = "static"
+[run]
+t_end = 2
+)";
+
+// Parses kGood with one line replaced (or appended to a section) and returns the error message.
+std::string error_of(const std::string& text, const std::vector<std::string>& overrides = {}) {
+  try {
+    (void)parse_scenario(text, "test.toml", overrides);
+  } catch (const std::invalid_argument& e) {
+    return e.what();
+  }
+  return "";
+}
+
+std::string replace(std::string text, const std::string& from, const std::string& to) {
+  const auto at = text.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  return text.replace(at, from.size(), to);
+}
+
+TEST(DynScenario, ParsesAGoodScenarioWithDefaults) {
+  const Scenario s = parse_scenario(kGood, "test.toml");
+  EXPECT_EQ(s.name, "test");
+  EXPECT_EQ(s.body.preset, "sphere");
+  EXPECT_EQ(*s.body.radius, 0.05);
+  EXPECT_EQ(s.contact.g, 9.81);
+  EXPECT_EQ(s.law, "exact");
+  EXPECT_EQ(s.run.integrator.method, "rk8pd");
+  EXPECT_EQ(s.run.t_end, 2.0);
+  EXPECT_NEAR(s.initial.eps, -std::cbrt((9.81 / 1e7) * (9.81 / 1e7)), 1e-18);  // "static"
+  EXPECT_EQ(s.initial.omega.z(), 20.0);
+  EXPECT_NE(s.resolved_toml.find("radius"), std::string::npos);
+}
+
+TEST(DynScenario, OverridesUseTheSameKeyPaths) {
+  const Scenario s = parse_scenario(
+      kGood, "test.toml",
+      {"run.t_end=0.5", "contact.law=pade-printed", "initial.gamma=[0, 0.6, 0.8]", "run.integrator=\"rkck\"",
+       "body.mass=2.5", "initial.eps=-1e-4"});
+  EXPECT_EQ(s.run.t_end, 0.5);
+  EXPECT_EQ(s.law, "pade-printed");
+  EXPECT_NEAR(s.initial.gamma.y(), 0.6, 1e-15);
+  EXPECT_EQ(s.run.integrator.method, "rkck");
+  EXPECT_EQ(s.body.mass, 2.5);
+  EXPECT_EQ(s.initial.eps, -1e-4);
+  EXPECT_EQ(s.overrides.size(), 6u);
+}
+
+TEST(DynScenario, NormalisesGammaOrRejectsAVectorFarFromUnit) {
+  const Scenario s = parse_scenario(replace(kGood, "gamma = [0, 0, 1]", "gamma = [0.2431, 0, 0.97]"), "t");
+  EXPECT_NEAR(s.initial.gamma.norm(), 1.0, 1e-15);
+  const std::string e = error_of(replace(kGood, "gamma = [0, 0, 1]", "gamma = [0, 0, 0.5]"));
+  EXPECT_NE(e.find("initial.gamma = [0, 0, 0.5] has length 0.5"), std::string::npos) << e;
+}
+
+// Each bad scenario gives one error that names the key (and the file).
+struct BadCase {
+  const char* what;
+  std::string text;
+  std::vector<std::string> overrides;
+  const char* expected;
+};
+
+TEST(DynScenario, EachBadScenarioGivesOneClearError) {
+  const std::vector<BadCase> cases = {
+      {"unknown key", replace(kGood, "t_end = 2", "t_end = 2\nt_edn = 3"), {}, "unknown key run.t_edn"},
+      {"unknown section", std::string(kGood) + "[output]\nx = 1\n", {}, "unknown key output"},
+      {"unknown top-level key", replace(kGood, "name = \"test\"", "nam = \"x\""), {}, "unknown key nam"},
+      {"wrong type", replace(kGood, "t_end = 2", "t_end = \"2\""), {}, "run.t_end must be a number, got a string"},
+      {"wrong vector length", replace(kGood, "omega = [0, 0, 20]", "omega = [0, 20]"), {},
+       "initial.omega must have 3 components"},
+      {"missing key", replace(kGood, "k = 0.2", ""), {}, "contact.k is required"},
+      {"missing section", replace(kGood, "[run]\nt_end = 2", ""), {}, "section [run] is required"},
+      {"negative friction", replace(kGood, "k = 0.2", "k = -0.2"), {}, "contact.k = -0.2 is invalid"},
+      {"non-convex profile",
+       replace(kGood, "profile = \"sphere\"\nradius = 0.05", "chi2 = [0.3, 0, 0.7, 0, -1]"), {},
+       "not strictly convex"},
+      {"unknown preset", replace(kGood, "profile = \"sphere\"", "profile = \"cube\""), {},
+       "body.profile = 'cube' is not a known preset"},
+      {"bad t_end", replace(kGood, "t_end = 2", "t_end = -1"), {}, "run.t_end = -1 is invalid"},
+      {"unknown stepper", replace(kGood, "t_end = 2", "t_end = 2\nintegrator = \"euler\""), {},
+       "run.integrator = 'euler' is not a known stepper"},
+      {"bad eps string", replace(kGood, "eps = \"static\"", "eps = \"low\""), {}, "initial.eps must be a number"},
+      {"TOML syntax", replace(kGood, "k = 0.2", "k = = 0.2"), {}, "test.toml:"},
+      {"override unknown key", kGood, {"run.tend=3"}, "unknown key run.tend"},
+      {"override bad value", kGood, {"run.t_end=abc"}, "run.t_end must be a number, got a string"},
+      {"override without =", kGood, {"run.t_end"}, "must have the form key=value"},
+      {"override into a value", kGood, {"run.t_end.x=1"}, "run.t_end is not a section"},
+  };
+  for (const auto& c : cases) {
+    const std::string e = error_of(c.text, c.overrides);
+    EXPECT_NE(e.find(c.expected), std::string::npos) << c.what << ": got '" << e << "'";
+    EXPECT_EQ(e.find('\n'), std::string::npos) << c.what << ": one line, got '" << e << "'";
+  }
+}
+
+TEST(DynScenario, ShippedScenariosAreValid) {
+  const std::filesystem::path dir = std::filesystem::path(FRICTIONLAB_SOURCE_DIR) / "data" / "scenarios";
+  int n = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+    if (entry.path().extension() != ".toml") continue;
+    EXPECT_NO_THROW((void)load_scenario(entry.path())) << entry.path();
+    ++n;
+  }
+  EXPECT_GE(n, 8);  // sphere sliding, sphere spinning, egg cases a, b, c for both readings
+  EXPECT_THROW((void)load_scenario(dir / "no-such-file.toml"), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace frictionlab::dynamics

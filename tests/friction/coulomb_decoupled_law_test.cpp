@@ -1,0 +1,128 @@
+// Decoupled Coulomb friction: closed forms of its pure-spin torque, limits, symmetries, and the
+// exact law.
+
+#include "friction/coulomb_decoupled_law.h"
+
+#include <gtest/gtest.h>
+
+#include "friction/exact_law.h"
+
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <random>
+
+namespace frictionlab::friction {
+namespace {
+
+constexpr double pi = std::numbers::pi;
+// Closed forms evaluated with a few operations and tgamma (accurate to a few ulp), compared with
+// Boost's ellint_2 (accurate to a few ulp): 1e-14 relative leaves room for both.
+constexpr double kClosedFormTol = 1e-14;
+
+TEST(CoulombDecoupledLaw, CircleSpinTorque) {
+  // mu = 1: E(0) = pi/2, M0 = (3 pi/16) kN a.
+  const CoulombDecoupledLaw law;
+  const auto f = law.evaluate({0.2, 3.0, 0.02, 0.02, 0.0, 50.0, 0.3});
+  EXPECT_EQ(f.F1, 15.0);
+  EXPECT_EQ(f.F2, 0.0);
+  EXPECT_NEAR(f.M, 3.0 * pi / 16.0 * 15.0 * 0.02, kClosedFormTol);
+}
+
+TEST(CoulombDecoupledLaw, SpinTorqueAtModulusOneOverRootTwo) {
+  // mu = 1/sqrt 2 gives e^2 = 1/2, where K = Gamma(1/4)^2/(4 sqrt pi) and, by Legendre's relation,
+  // E = K/2 + pi/(4K) (DLMF 19.20.2 and 19.7.1). a = 2, b = sqrt 2, kN = 1: M0 = (3/4) E.
+  const double K = std::pow(std::tgamma(0.25), 2) / (4.0 * std::sqrt(pi));
+  const double E = K / 2.0 + pi / (4.0 * K);
+  const CoulombDecoupledLaw law;
+  const auto f = law.evaluate({0.0, -1.0, 2.0, std::sqrt(2.0), 1.0, 1.0, 1.0});
+  EXPECT_EQ(f.F1, 0.0);
+  EXPECT_NEAR(f.M, -0.75 * E, kClosedFormTol);
+}
+
+TEST(CoulombDecoupledLaw, SpinTorqueAtExtremeAxisRatios) {
+  const CoulombDecoupledLaw law;
+  // A needle: mu -> 0, E -> 1, M0 -> (3/8) kN a. At mu = 1e-300, e rounds to 1 exactly.
+  EXPECT_NEAR(law.evaluate({0.0, 1.0, 1.0, 1e-300, 0.0, 1.0, 1.0}).M, 0.375, kClosedFormTol);
+  // Near the circle: E(e) = (pi/2)(1 - e^2/4 + O(e^4)), e^2 = 1 - mu^2 ~ 2e-10.
+  const double mu = 1.0 - 1e-10;
+  const double e2 = (1.0 - mu) * (1.0 + mu);
+  EXPECT_NEAR(law.evaluate({0.0, 1.0, 1.0, mu, 0.0, 1.0, 1.0}).M,
+              0.375 * pi / 2.0 * (1.0 - e2 / 4.0), kClosedFormTol);
+}
+
+TEST(CoulombDecoupledLaw, LimitsExactlyNearAndAway) {
+  const CoulombDecoupledLaw law;
+  const double a = 0.5, b = 0.25, kN = 2.0;
+  const double M0 = law.evaluate({0.0, 1.0, a, b, 0.0, kN, 1.0}).M;
+  const auto rest = law.evaluate({0.0, 0.0, a, b, 0.0, kN, 1.0});
+  EXPECT_EQ(rest.F1, 0.0);
+  EXPECT_EQ(rest.M, 0.0);
+  // The decoupled law is discontinuous: any slip at all gives the full kN, any spin the full M0.
+  const double tiny = std::numeric_limits<double>::denorm_min();
+  EXPECT_EQ(law.evaluate({tiny, 0.0, a, b, 0.0, kN, 1.0}).F1, kN);
+  EXPECT_EQ(law.evaluate({1e-8, 0.0, a, b, 0.0, kN, 1.0}).F1, kN);
+  EXPECT_EQ(law.evaluate({1.0, 1e-8, a, b, 0.0, kN, 1.0}).M, M0);
+  EXPECT_EQ(law.evaluate({1.0, -1e-8, a, b, 0.0, kN, 1.0}).M, -M0);
+  EXPECT_EQ(law.evaluate({1.0, 0.0, a, b, 0.0, kN, 1.0}).M, 0.0);
+  const auto away = law.evaluate({3.0, 7.0, a, b, 1.2, kN, 1.0});
+  EXPECT_EQ(away.F1, kN);
+  EXPECT_EQ(away.F2, 0.0);
+  EXPECT_EQ(away.M, M0);
+  // No load, no friction.
+  const auto unloaded = law.evaluate({3.0, 7.0, a, b, 1.2, 0.0, 1.0});
+  EXPECT_EQ(unloaded.F1, 0.0);
+  EXPECT_EQ(unloaded.M, 0.0);
+}
+
+TEST(CoulombDecoupledLaw, SymmetriesAndDissipationOnRandomInputs) {
+  const CoulombDecoupledLaw law;
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> u01(0.0, 1.0);
+  for (int i = 0; i < 1000; ++i) {
+    const double a = 0.01 + u01(rng);
+    const double b = a * (0.05 + 0.95 * u01(rng));
+    const double U = u01(rng);
+    const double Omega = 10.0 * (u01(rng) - 0.5);
+    const double psi = pi * u01(rng);
+    const ContactInput in{U, Omega, a, b, psi, 2.0, 0.3};
+    const auto p = law.evaluate(in);
+    auto flipped = in;
+    flipped.Omega = -Omega;
+    const auto m = law.evaluate(flipped);
+    EXPECT_EQ(m.F1, p.F1);
+    EXPECT_EQ(m.M, -p.M);
+    auto turned = in;
+    turned.psi = psi + pi;
+    EXPECT_EQ(law.evaluate(turned).M, p.M);
+    EXPECT_GE(p.F1 * U + p.M * Omega, 0.0);
+  }
+}
+
+TEST(CoulombDecoupledLaw, BoundsTheExactLawFromAbove) {
+  // The decoupled law is exact in the pure limits and, in between, overestimates both resistances:
+  // the exact law has F1 < kN and |M| < M0 whenever U > 0 and Omega != 0 (model-notes §1).
+  // kExactTol: the exact law's accuracy, ~1e-13 kN.
+  constexpr double kExactTol = 1e-12;
+  const ExactLaw exact;
+  const CoulombDecoupledLaw law;
+  for (double mu : {0.05, 0.2, 0.5, 0.8, 1.0}) {
+    const ContactInput spin{0.0, -2.0, 1.5, 1.5 * mu, 0.3, 2.0, 0.5};
+    EXPECT_NEAR(law.evaluate(spin).M, exact.evaluate(spin).M, kExactTol) << "mu = " << mu;
+    const ContactInput slide{1.0, 0.0, 1.5, 1.5 * mu, 0.3, 2.0, 0.5};
+    EXPECT_NEAR(law.evaluate(slide).F1, exact.evaluate(slide).F1, kExactTol) << "mu = " << mu;
+    for (int j = 0; j <= 6; ++j) {
+      for (int i = 0; i <= 60; ++i) {
+        const double s = std::pow(10.0, -3.0 + 6.0 * i / 60.0);
+        const ContactInput in{s, 1.0, 1.0, mu, pi * j / 6.0, 1.0, 1.0};
+        const auto r = law.evaluate(in);
+        const auto e = exact.evaluate(in);
+        EXPECT_GE(r.F1, e.F1 - kExactTol);
+        EXPECT_GE(r.M, e.M - kExactTol);
+      }
+    }
+  }
+}
+
+}  // namespace
+}  // namespace frictionlab::friction
