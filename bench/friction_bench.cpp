@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "bench/allocation_counter.h"
 #include "bench/law_input_set.h"
 #include "friction/registry.h"
 
@@ -59,11 +60,15 @@ void register_law(const std::string& name, const std::vector<friction::ContactIn
 
   auto* b = benchmark::RegisterBenchmark(("BM_law/" + name).c_str(), [law, set, err](benchmark::State& state) {
     std::size_t i = 0;
+    const long long allocations_before = g_allocations.load();
     for (auto _ : state) {
       benchmark::DoNotOptimize(law->evaluate((*set)[i]));
       if (++i == set->size()) i = 0;
     }
+    const long long allocations = g_allocations.load() - allocations_before;
     state.SetItemsProcessed(state.iterations());
+    state.counters["allocs_per_eval"] =
+        static_cast<double>(allocations) / static_cast<double>(state.iterations());
     state.counters["inputs"] = static_cast<double>(set->size());
     state.counters["max_err_F1"] = err.F1;
     state.counters["max_err_F2"] = err.F2;

@@ -3,38 +3,53 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <limits>
 
 namespace frictionlab::dynamics {
 namespace {
 
 // Starting points for Newton: z(gamma3) is analytic on [-1, 1] (g' != 0 up to the poles), so
-// linear interpolation in this table is accurate to ~1e-5 L and Newton needs 2-3 steps.
-constexpr int kGuessTableSize = 257;
-// Newton stops when its step is below this fraction of the body length (the next step would be
-// ~1e-28 L: the result is exact to rounding).
-constexpr double kNewtonStepTolerance = 1e-14;
+// cubic Hermite interpolation in this table (values and slopes dz/dgamma3 = s^3/(2G)) is accurate
+// to ~h^4 |z^(4)|/384 ~ 1e-13 L, and one Newton step reaches rounding.
+constexpr int kGuessTableSize = 1025;
+// Building the table: Newton from the middle, stopped when its step is below this fraction of
+// the body length (the result is then exact to rounding).
+constexpr double kTableStepTolerance = 1e-14;
+// At run time: a Newton step below this fraction of the length is the last one. Newton's error
+// after a step of size e is ~ (g''/2g') e^2 ~ e^2/L, i.e. <= 1e-20 L here: exact to rounding.
+constexpr double kAcceptStepTolerance = 1e-10;
 constexpr int kMaxNewtonIterations = 100;
 
 }  // namespace
 
 ContactGeometry::ContactGeometry(const Profile& profile, double com) : profile_(profile), com_(com) {
-  guess_.resize(kGuessTableSize);
+  guess_.resize(2 * kGuessTableSize);
   const double mid = 0.5 * (profile_.z_lo() + profile_.z_hi());
   for (int i = 0; i < kGuessTableSize; ++i) {
     const double g3 = -1.0 + 2.0 * i / (kGuessTableSize - 1);
-    guess_[static_cast<std::size_t>(i)] = solve(g3, mid);
+    const double z = solve(g3, mid, kTableStepTolerance);
+    const PolynomialJet j = profile_.chi2().jet(z);
+    const double s2 = 4.0 * j.value + j.d1 * j.d1;
+    // dz/dgamma3 = 1/g'(z) = s^3 / (2 G): finite up to the poles (G = -P'^2 there).
+    guess_[2 * static_cast<std::size_t>(i)] = z;
+    guess_[2 * static_cast<std::size_t>(i) + 1] = s2 * std::sqrt(s2) / (2.0 * (2.0 * j.value * j.d2 - j.d1 * j.d1));
   }
 }
 
 double ContactGeometry::solve_contact_z(double gamma3) const {
-  const double x = (std::clamp(gamma3, -1.0, 1.0) + 1.0) * 0.5 * (kGuessTableSize - 1);
+  constexpr double h = 2.0 / (kGuessTableSize - 1);
+  const double x = (std::clamp(gamma3, -1.0, 1.0) + 1.0) / h;
   const int i = std::clamp(static_cast<int>(x), 0, kGuessTableSize - 2);
-  const double w = x - i;
-  const double z0 = (1.0 - w) * guess_[static_cast<std::size_t>(i)] + w * guess_[static_cast<std::size_t>(i) + 1];
-  return solve(gamma3, z0);
+  const double t = x - i;
+  const double* g = guess_.data() + 2 * static_cast<std::size_t>(i);  // z0, dz0, z1, dz1
+  // Cubic Hermite basis.
+  const double t2 = t * t, t3 = t2 * t;
+  const double z0 = (2 * t3 - 3 * t2 + 1) * g[0] + (t3 - 2 * t2 + t) * h * g[1] + (-2 * t3 + 3 * t2) * g[2] +
+                    (t3 - t2) * h * g[3];
+  return solve(gamma3, z0, kAcceptStepTolerance);
 }
 
-double ContactGeometry::solve(double gamma3, double z) const {
+double ContactGeometry::solve(double gamma3, double z, double step_tolerance) const {
   const double lo0 = profile_.z_lo();
   const double hi0 = profile_.z_hi();
   // The poles, exactly (the pole z is a root of P: g = ±1 there).
@@ -42,9 +57,12 @@ double ContactGeometry::solve(double gamma3, double z) const {
   if (gamma3 <= -1.0) return hi0;
   const Polynomial& P = profile_.chi2();
   double lo = lo0, hi = hi0;
-  if (!(z > lo && z < hi)) z = 0.5 * (lo + hi);
-  const double tol = kNewtonStepTolerance * (hi0 - lo0);
+  z = std::clamp(z, lo0, hi0);  // a starting point outside (interpolation overshoot) goes to the pole
+  const double tol = step_tolerance * (hi0 - lo0);
+  const double width_tol = 4.0 * std::numeric_limits<double>::epsilon() * std::max({std::abs(lo0), std::abs(hi0)});
   // Safeguarded Newton (rtsafe): f = g - gamma3 decreases in z; keep a bracket, bisect on escape.
+  // Only a small Newton step ends the loop (its error is then ~step^2/L); bisection runs until the
+  // bracket is down to rounding.
   for (int it = 0; it < kMaxNewtonIterations; ++it) {
     const PolynomialJet j = P.jet(z);
     const double s2 = 4.0 * j.value + j.d1 * j.d1;
@@ -54,10 +72,11 @@ double ContactGeometry::solve(double gamma3, double z) const {
     if (f > 0.0) lo = z; else hi = z;
     const double fp = 2.0 * (2.0 * j.value * j.d2 - j.d1 * j.d1) / (s2 * s);
     double next = z - f / fp;
-    if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+    const bool newton = next > lo && next < hi;
+    if (!newton) next = 0.5 * (lo + hi);
     const double step = std::abs(next - z);
     z = next;
-    if (step <= tol) break;
+    if (newton ? step <= tol : hi - lo <= width_tol) break;
   }
   return z;
 }

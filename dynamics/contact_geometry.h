@@ -66,9 +66,10 @@ class ContactGeometry {
  private:
   Profile profile_;
   double com_;
-  [[nodiscard]] double solve(double gamma3, double z_start) const;
+  [[nodiscard]] double solve(double gamma3, double z_start, double step_tolerance) const;
 
-  std::vector<double> guess_;  ///< z at gamma3 = -1 + 2 i / (n - 1): Newton's starting points
+  /// At gamma3 = -1 + 2 i / (n - 1): z and dz/dgamma3, interleaved (Newton's starting points).
+  std::vector<double> guess_;
 };
 
 }  // namespace frictionlab::dynamics

@@ -1,8 +1,13 @@
 #pragma once
-// The stagnation region of the paper (end of section 2): the friction laws are singular at
-// U = Omega = 0 (Coulomb's sign function), so near rest an adaptive integrator would chatter with
-// ever smaller steps. The run stops instead, with reason "rest", as soon as an accepted step lands
-// in contact with all three below their thresholds (checked between steps, never inside the RHS).
+// The stagnation region of the paper (end of section 2). The friction laws are singular at
+// U = Omega = 0 (Coulomb's sign function: the local Coulomb law has no sticking branch), so once
+// the contact point neither slips nor spins an adaptive integrator can only chatter with ever
+// smaller steps. Checked between accepted steps (never inside the RHS), in contact:
+//   rest     U < slip_speed, |Omega| < spin and kinetic energy < kinetic_energy;
+//   rolling  U < slip_speed and |Omega| < spin but the kinetic energy is larger: the body rolls
+//            (or rocks) without slip and spin, which this model does not dissipate (there is no
+//            rolling resistance), so it would roll for ever; the run stops there too unless
+//            run.stop_when_rolling = false (then it chatters on, bounded by run.max_steps).
 
 #include <cmath>
 
@@ -22,8 +27,12 @@ struct RestThresholds {
   /// Throws std::invalid_argument naming the key (run.rest_slip_speed, ...) and the rule.
   void validate() const;
 
+  /// The contact neither slips nor spins (the laws' singular set).
+  [[nodiscard]] bool contact_stagnant(bool in_contact, double U, double Omega) const {
+    return in_contact && U < slip_speed && std::abs(Omega) < spin;
+  }
   [[nodiscard]] bool at_rest(bool in_contact, double U, double Omega, double kinetic) const {
-    return in_contact && U < slip_speed && std::abs(Omega) < spin && kinetic < kinetic_energy;
+    return contact_stagnant(in_contact, U, Omega) && kinetic < kinetic_energy;
   }
 };
 

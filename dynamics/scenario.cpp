@@ -68,6 +68,12 @@ class Section {
     if (!n.is_string()) fail(path(key) + " must be a string, got " + type_name(n) + " " + shown(n));
     return *n.value<std::string>();
   }
+  bool boolean(const std::string& key, bool fallback) {
+    if (!has(key)) return fallback;
+    const toml::node& n = node(key);
+    if (!n.is_boolean()) fail(path(key) + " must be true or false, got " + type_name(n) + " " + shown(n));
+    return *n.value<bool>();
+  }
   std::vector<double> numbers(const std::string& key) {
     const toml::node& n = node(key);
     const toml::array* a = n.as_array();
@@ -235,9 +241,10 @@ Scenario build(const toml::table& root, const std::string& source, const std::ve
   r.rest.slip_speed = run.number("rest_slip_speed", r.rest.slip_speed);
   r.rest.spin = run.number("rest_spin", r.rest.spin);
   r.rest.kinetic_energy = run.number("rest_kinetic_energy", r.rest.kinetic_energy);
-  r.roll_slip_speed = run.number("roll_slip_speed", r.roll_slip_speed);
+  r.stop_when_rolling = run.boolean("stop_when_rolling", r.stop_when_rolling);
   run.check_no_unknown_keys({"t_end", "output_dt", "integrator", "abs_tol", "rel_tol", "initial_step", "max_step",
-                             "max_steps", "rest_slip_speed", "rest_spin", "rest_kinetic_energy", "roll_slip_speed"});
+                             "max_steps", "rest_slip_speed", "rest_spin", "rest_kinetic_energy",
+                             "stop_when_rolling"});
   r.validate();
 
   std::ostringstream resolved;

@@ -46,6 +46,21 @@ struct Context {
   std::string message;     // what went wrong, for the summary
 };
 
+// The friction at a state, in one line (for failure messages only).
+std::string describe_friction(const BodyOnPlane& sys, const StateVector& x) {
+  std::ostringstream m;
+  m.precision(10);
+  try {
+    const ContactState c = sys.contact_state(x);
+    m << "friction law '" << sys.law().name() << "' gives F1 = " << c.friction.F1 << " N, F2 = " << c.friction.F2
+      << " N, M = " << c.friction.M << " N m at U = " << c.U << " m/s, Omega = " << c.Omega << " 1/s, a = " << c.a
+      << " m, b = " << c.b << " m, psi = " << c.psi << ", N = " << c.N << " N";
+  } catch (const std::exception& e) {
+    m << e.what();
+  }
+  return m.str();
+}
+
 std::string describe_nonfinite(const BodyOnPlane& sys, double t, const StateVector& x) {
   std::ostringstream m;
   m.precision(10);
@@ -54,14 +69,7 @@ std::string describe_nonfinite(const BodyOnPlane& sys, double t, const StateVect
     m << " (the trial state is not finite)";
     return m.str();
   }
-  try {
-    const ContactState c = sys.contact_state(x);
-    m << ": friction law '" << sys.law().name() << "' returned F1 = " << c.friction.F1 << " N, F2 = "
-      << c.friction.F2 << " N, M = " << c.friction.M << " N m at U = " << c.U << " m/s, Omega = " << c.Omega
-      << " 1/s, a = " << c.a << " m, b = " << c.b << " m, psi = " << c.psi << ", N = " << c.N << " N";
-  } catch (const std::exception& e) {
-    m << ": " << e.what();
-  }
+  m << ": " << describe_friction(sys, x);
   return m.str();
 }
 
@@ -125,8 +133,6 @@ void RunOptions::validate() const {
   if (!(std::isfinite(t_end) && t_end > 0.0)) fail("run.t_end", t_end, "it must be finite and > 0 s");
   if (!(std::isfinite(output_dt) && output_dt > 0.0))
     fail("run.output_dt", output_dt, "it must be finite and > 0 s");
-  if (!(std::isfinite(roll_slip_speed) && roll_slip_speed >= 0.0))
-    fail("run.roll_slip_speed", roll_slip_speed, "it must be finite and >= 0 m/s (0 disables the event)");
   integrator.validate();
   rest.validate();
 }
@@ -224,12 +230,14 @@ RunSummary simulate(const BodyOnPlane& sys, const StateVector& x0, const RunOpti
       in_contact = c.in_contact;
       s.min_normal_force = std::min(s.min_normal_force, c.N);
       s.max_gamma_drift = std::max(s.max_gamma_drift, std::abs(vertical(x).norm() - 1.0));
-      if (options.rest.at_rest(c.in_contact, c.U, c.Omega, sys.kinetic_energy(x))) {
+      const double kinetic = sys.kinetic_energy(x);
+      if (options.rest.at_rest(c.in_contact, c.U, c.Omega, kinetic)) {
         stop(Termination::rest, "slip speed, spin and kinetic energy fell below the rest thresholds");
         done = true;
-      } else if (options.roll_slip_speed > 0.0 && c.in_contact && c.U < options.roll_slip_speed) {
-        stop(Termination::rolling, "the slip speed fell below run.roll_slip_speed = " +
-                                       num(options.roll_slip_speed) + " m/s");
+      } else if (options.stop_when_rolling && options.rest.contact_stagnant(c.in_contact, c.U, c.Omega)) {
+        stop(Termination::rolling, "the contact neither slips (U = " + num(c.U) + " m/s) nor spins (Omega = " +
+                                       num(c.Omega) + " 1/s) but the kinetic energy " + num(kinetic) +
+                                       " J is above run.rest_kinetic_energy: the body rolls without slip");
         done = true;
       } else if (s.steps >= io.max_steps) {
         stop(Termination::max_steps, "run.max_steps = " + std::to_string(io.max_steps) + " steps reached");
@@ -251,7 +259,8 @@ RunSummary simulate(const BodyOnPlane& sys, const StateVector& x0, const RunOpti
         stop(Termination::non_finite, ctx.message + " (no step size down to machine precision avoids it)");
       } else {
         stop(Termination::integrator_failure,
-             std::string("GSL: ") + gsl_strerror(status) + " at t = " + num(t) + " s");
+             std::string("GSL: ") + gsl_strerror(status) + " (no step above machine precision meets the tolerance) at t = " +
+                 num(t) + " s; at that state " + describe_friction(sys, x));
       }
       break;
     }

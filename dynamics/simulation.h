@@ -5,8 +5,8 @@
 // Events, checked between accepted steps (docs/dynamics.md §5):
 //   t_end       the end time was reached;
 //   rest        the stagnation region (dynamics/rest_event.h);
-//   rolling     optional: the slip speed fell below run.roll_slip_speed in contact (e.g. a sliding
-//               sphere starts to roll; without spin the Coulomb switch would then chatter);
+//   rolling     the contact stopped slipping and spinning while the body still moves (a sliding
+//               sphere starts to roll; an egg rocks on its pole): see dynamics/rest_event.h;
 //   non-finite  the state or the right-hand side stopped being finite (e.g. a friction law's
 //               pole) and GSL's retries with smaller steps, down to machine precision, did not help;
 //   law-error   the friction law rejected its input (message attached);
@@ -35,7 +35,7 @@ struct IntegratorOptions {
   double rel_tol = 1e-9;       ///< relative local error per component
   double initial_step = 1e-5;  ///< s, > 0
   double max_step = 0.0;       ///< s; 0 = no limit beyond the output interval
-  long max_steps = 100'000'000;
+  long max_steps = 10'000'000;  ///< accepted steps before the run stops with reason max-steps
 
   void validate() const;  ///< std::invalid_argument naming the run.* key
 };
@@ -48,7 +48,7 @@ struct RunOptions {
   double output_dt = 1e-3;  ///< s, > 0: the sample interval
   IntegratorOptions integrator;
   RestThresholds rest;
-  double roll_slip_speed = 0.0;  ///< m/s; > 0 enables the "rolling" event
+  bool stop_when_rolling = true;  ///< stop with reason "rolling" (dynamics/rest_event.h)
   const std::atomic<bool>* cancel = nullptr;  ///< checked between steps; may be null
 
   void validate() const;  ///< std::invalid_argument naming the run.* key

@@ -2,10 +2,26 @@
 
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <cmath>
+#include <cstdlib>
+#include <new>
 #include <random>
 
+#include "friction/registry.h"
 #include "test_support.h"
+
+// Counts heap allocations in this test program (the right-hand side must make none).
+namespace {
+std::atomic<long> g_allocations{0};
+}  // namespace
+void* operator new(std::size_t n) {
+  ++g_allocations;
+  if (void* p = std::malloc(n ? n : 1)) return p;
+  throw std::bad_alloc();
+}
+void operator delete(void* p) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t) noexcept { std::free(p); }
 
 namespace frictionlab::dynamics {
 namespace {
@@ -88,6 +104,12 @@ TEST(DynEquationsOfMotion, FrictionOpposesTheSlipAndActsAtTheContactPoint) {
     const Eigen::Vector3d slip = c.u - c.u.dot(c.gamma) * c.gamma;
     const Eigen::Vector3d F = c.force - c.N * c.gamma;
     EXPECT_NEAR(F.dot(slip), -c.friction.F1 * c.U, 1e-12 * (1.0 + c.friction.F1 * c.U));
+    // Eq. (7) in the slip frame: F = -F1 e1 - F2 e2 with e1 along the slip and e2 = gamma x e1.
+    ASSERT_GT(c.U, 0.0);
+    EXPECT_VEC_NEAR(c.e1, Eigen::Vector3d(slip / c.U), 1e-14);
+    EXPECT_NEAR(F.dot(c.e1), -c.friction.F1, 1e-12 * c.N);
+    EXPECT_NEAR(F.dot(c.gamma.cross(c.e1)), -c.friction.F2, 1e-12 * c.N);
+    EXPECT_GT(std::abs(c.friction.F2), 1e-6 * c.N);  // the test law's F2 is exercised
     EXPECT_NEAR(F.dot(c.gamma), 0.0, 1e-12 * c.N);
     EXPECT_VEC_NEAR(c.torque, Eigen::Vector3d(c.point.r.cross(c.force) - c.friction.M * c.gamma), 1e-12);
     EXPECT_GE(c.psi, 0.0);
@@ -130,6 +152,25 @@ TEST(DynEquationsOfMotion, ZeroSlipTakesTheMajorAxisAsE1) {
   EXPECT_NEAR(c.e1.dot(g), 0.0, 1e-15);
 }
 
+TEST(DynEquationsOfMotion, PsiIsTheAngleFromTheSlipToTheMajorAxisCounterClockwise) {
+  // Oblate spheroid on its equator, gamma = body e1: the major axis is the parallel, along body
+  // e2; counter-clockwise about gamma turns e2 into e3. A slip at angle theta from e2 towards e3
+  // sees the major axis at -theta, i.e. psi = pi - theta in [0, pi).
+  const SmoothTestLaw law;
+  BodySpec spec;
+  spec.preset = "spheroid";
+  spec.semi_axes = std::array<double, 2>{0.2, 0.05};
+  spec.mass = 1.0;
+  const BodyOnPlane sys(make_body(spec), paper_plane(), law);
+  for (const double theta : {0.3, 1.2, 2.0}) {
+    const Eigen::Vector3d slip(0.0, std::cos(theta), std::sin(theta));
+    const StateVector x = make_state(0.5 * slip, Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitX(), -1e-4);
+    const ContactState c = sys.contact_state(x);
+    EXPECT_NEAR(c.psi, std::numbers::pi - theta, 1e-12) << "theta = " << theta;
+    EXPECT_NEAR(c.a / c.b, 0.2 / 0.05, 1e-12);  // sqrt(R_parallel / R_meridian) = sqrt(a / (c^2/a))
+  }
+}
+
 TEST(DynEquationsOfMotion, GammaIsRenormalisedWhereItIsRead) {
   const SmoothTestLaw law;
   const BodyOnPlane sys(egg_body("egg-printed"), paper_plane(), law);
@@ -144,6 +185,22 @@ TEST(DynEquationsOfMotion, GammaIsRenormalisedWhereItIsRead) {
   StateVector d;
   sys(0.0, x, d);
   EXPECT_NEAR(Eigen::Vector3d(vertical(d)).dot(Eigen::Vector3d(vertical(x))), 0.0, 1e-12);
+}
+
+TEST(DynEquationsOfMotion, TheRightHandSideMakesNoHeapAllocation) {
+  // A later study times laws along trajectories: the RHS around the law must stay lean.
+  for (const char* name : {"exact", "pade-printed"}) {
+    const auto law = friction::make_law(name);
+    const BodyOnPlane sys(egg_body("egg-printed"), paper_plane(), *law);
+    std::mt19937 rng(13);
+    std::vector<StateVector> xs;
+    for (int i = 0; i < 50; ++i) xs.push_back(random_contact_state(rng));
+    StateVector d;
+    sys(0.0, xs.front(), d);  // warm-up
+    const long before = g_allocations.load();
+    for (const auto& x : xs) sys(0.0, x, d);
+    EXPECT_EQ(g_allocations.load() - before, 0) << name;
+  }
 }
 
 }  // namespace
