@@ -11,10 +11,11 @@ namespace frictionlab::bench {
 inline std::atomic<long long> g_allocations{0};
 }  // namespace frictionlab::bench
 
-void* operator new(std::size_t size) {
+// noinline: lets GCC see that delete frees what this new allocated (-Wmismatched-new-delete).
+[[gnu::noinline]] void* operator new(std::size_t size) {
   frictionlab::bench::g_allocations.fetch_add(1, std::memory_order_relaxed);
   if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
   throw std::bad_alloc();
 }
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+[[gnu::noinline]] void operator delete(void* p) noexcept { std::free(p); }
+[[gnu::noinline]] void operator delete(void* p, std::size_t) noexcept { std::free(p); }

@@ -12,16 +12,8 @@
 #include "test_support.h"
 
 // Counts heap allocations in this test program (the right-hand side must make none).
-namespace {
-std::atomic<long> g_allocations{0};
-}  // namespace
-void* operator new(std::size_t n) {
-  ++g_allocations;
-  if (void* p = std::malloc(n ? n : 1)) return p;
-  throw std::bad_alloc();
-}
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+#include "bench/allocation_counter.h"
+using frictionlab::bench::g_allocations;
 
 namespace frictionlab::dynamics {
 namespace {
@@ -197,7 +189,7 @@ TEST(DynEquationsOfMotion, TheRightHandSideMakesNoHeapAllocation) {
     for (int i = 0; i < 50; ++i) xs.push_back(random_contact_state(rng));
     StateVector d;
     sys(0.0, xs.front(), d);  // warm-up
-    const long before = g_allocations.load();
+    const long long before = g_allocations.load();
     for (const auto& x : xs) sys(0.0, x, d);
     EXPECT_EQ(g_allocations.load() - before, 0) << name;
   }

@@ -1,0 +1,133 @@
+#include "dynamics/paper/experiment_plan.h"
+
+#include <algorithm>
+#include <charconv>
+#include <set>
+#include <stdexcept>
+
+#include "dynamics/scenario.h"
+#include "friction/registry.h"
+
+#ifndef FRICTIONLAB_SOURCE_DIR
+#define FRICTIONLAB_SOURCE_DIR "."
+#endif
+
+namespace frictionlab::dynamics::paper {
+namespace {
+
+std::string joined(const std::vector<std::string>& v) {
+  std::string out;
+  for (const auto& s : v) out += (out.empty() ? "" : ", ") + s;
+  return out;
+}
+
+void check_names(const std::vector<std::string>& given, const std::vector<std::string>& known, const char* option) {
+  if (given.empty()) throw std::invalid_argument(std::string(option) + " is empty: give at least one of " + joined(known));
+  std::set<std::string> seen;
+  for (const auto& g : given) {
+    if (std::find(known.begin(), known.end(), g) == known.end())
+      throw std::invalid_argument(std::string(option) + ": unknown name '" + g + "'; known: " + joined(known));
+    if (!seen.insert(g).second) throw std::invalid_argument(std::string(option) + ": '" + g + "' is given twice");
+  }
+}
+
+std::string shortest(double x) {
+  char buf[32];
+  const auto r = std::to_chars(buf, buf + sizeof buf, x);
+  return std::string(buf, r.ptr);
+}
+
+}  // namespace
+
+const std::vector<std::string>& known_eggs() {
+  static const std::vector<std::string> v = {"egg-printed", "egg-homogeneous"};
+  return v;
+}
+
+const std::vector<std::string>& known_cases() {
+  static const std::vector<std::string> v = {"a", "b", "c"};
+  return v;
+}
+
+const std::vector<std::string>& default_laws() {
+  static const std::vector<std::string> v = {"exact", "pade-reconstructed", "pade-printed", "moller-ellipsoidal"};
+  return v;
+}
+
+void PlanOptions::validate() const {
+  if (out_dir.empty()) throw std::invalid_argument("--out is empty: give an output directory");
+  std::vector<std::string> law_names;
+  for (const auto& info : friction::list_laws()) law_names.push_back(info.name);
+  check_names(laws, law_names, "--laws");
+  check_names(eggs, known_eggs(), "--eggs");
+  check_names(cases, known_cases(), "--cases");
+}
+
+std::vector<std::string> split_list(std::string_view list, std::string_view what) {
+  std::vector<std::string> out;
+  std::size_t start = 0;
+  while (true) {
+    const std::size_t comma = list.find(',', start);
+    std::string_view item = list.substr(start, comma == std::string_view::npos ? std::string_view::npos : comma - start);
+    while (!item.empty() && item.front() == ' ') item.remove_prefix(1);
+    while (!item.empty() && item.back() == ' ') item.remove_suffix(1);
+    if (item.empty())
+      throw std::invalid_argument(std::string(what) + " = '" + std::string(list) +
+                                  "' has an empty item: give names separated by commas");
+    out.emplace_back(item);
+    if (comma == std::string_view::npos) break;
+    start = comma + 1;
+  }
+  return out;
+}
+
+std::filesystem::path default_scenario_dir() {
+  const std::filesystem::path local = std::filesystem::path("data") / "scenarios";
+  if (std::filesystem::exists(local / (known_eggs().front() + "-a.toml"))) return local;
+  return std::filesystem::path(FRICTIONLAB_SOURCE_DIR) / "data" / "scenarios";
+}
+
+std::vector<RunSpec> plan_runs(const PlanOptions& options) {
+  options.validate();
+  const std::vector<std::string> paper_defaults = {"run.output_dt=" + shortest(kPaperOutputDt)};
+  std::vector<RunSpec> runs;
+  for (const auto& egg : options.eggs) {
+    for (const auto& c : options.cases) {
+      RunSpec base;
+      base.egg = egg;
+      base.case_id = c;
+      base.scenario_file = options.scenario_dir / (egg + "-" + c + ".toml");
+      if (!std::filesystem::exists(base.scenario_file))
+        throw std::invalid_argument("scenario file '" + base.scenario_file.string() +
+                                    "' does not exist (--scenarios names the folder of <egg>-<case>.toml)");
+      base.overrides = paper_defaults;
+      base.overrides.insert(base.overrides.end(), options.overrides.begin(), options.overrides.end());
+      const Scenario checked = load_scenario(base.scenario_file, base.overrides);  // throws on a bad --set
+      const std::filesystem::path group_dir = options.out_dir / "runs" / base.group();
+      for (const auto& law : options.laws) {
+        RunSpec r = base;
+        r.law = r.label = law;
+        r.out_dir = group_dir / r.label;
+        runs.push_back(std::move(r));
+      }
+      const bool has_reference =
+          std::find(options.laws.begin(), options.laws.end(), std::string(kReferenceLaw)) != options.laws.end();
+      if (options.baseline && has_reference) {
+        RunSpec r = base;
+        r.law = std::string(kReferenceLaw);
+        r.baseline = true;
+        const double abs_tol = checked.run.integrator.abs_tol * kBaselineToleranceFactor;
+        const double rel_tol = checked.run.integrator.rel_tol * kBaselineToleranceFactor;
+        r.label = r.law + "-tol" + shortest(abs_tol);
+        r.overrides.push_back("run.abs_tol=" + shortest(abs_tol));
+        r.overrides.push_back("run.rel_tol=" + shortest(rel_tol));
+        (void)load_scenario(r.scenario_file, r.overrides);
+        r.out_dir = group_dir / r.label;
+        runs.push_back(std::move(r));
+      }
+    }
+  }
+  return runs;
+}
+
+}  // namespace frictionlab::dynamics::paper
