@@ -13,6 +13,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "tests/friction/dimensionless_contact.h"
 #include "tests/friction/hertz_closed_forms.h"
 
 namespace frictionlab::friction {
@@ -36,15 +37,7 @@ constexpr double kFastSlipRelTol = 1e-5;
 constexpr double kNearLimitTol = 1e-7;
 
 ContactInput make(double s, double mu, double psi, double omega = 1.0) {
-  ContactInput in;
-  in.a = 1.0;
-  in.b = mu;
-  in.psi = psi;
-  in.Omega = omega;
-  in.U = s * std::abs(omega);
-  in.N = 1.0;
-  in.k = 1.0;
-  return in;
+  return dimensionless_contact(s, mu, psi, omega);
 }
 
 FrictionForces eval(const ContactInput& in) { return ExactLaw{}.evaluate(in); }

@@ -14,6 +14,7 @@
 #include <string>
 
 #include "friction/exact_law.h"
+#include "tests/friction/dimensionless_contact.h"
 #include "tests/friction/hertz_closed_forms.h"
 
 namespace frictionlab::friction {
@@ -26,15 +27,7 @@ constexpr double kPi = std::numbers::pi;
 constexpr double kReferenceTol = 1e-10;
 
 ContactInput make(double s, double mu, double psi, double omega = 1.0) {
-  ContactInput in;
-  in.a = 1.0;
-  in.b = mu;
-  in.psi = psi;
-  in.Omega = omega;
-  in.U = s * std::abs(omega);
-  in.N = 1.0;
-  in.k = 1.0;
-  return in;
+  return dimensionless_contact(s, mu, psi, omega);
 }
 
 TEST(ExactReferenceLaw, NameAndSummary) {
