@@ -1,0 +1,133 @@
+#include "dynamics/paper/experiment_runner.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <stdexcept>
+#include <thread>
+
+#include "dynamics/paper/feature_json.h"
+#include "dynamics/paper/figure_data.h"
+#include "dynamics/paper/run_series.h"
+#include "dynamics/scenario.h"
+#include "dynamics/scenario_run.h"
+#include "friction/registry.h"
+
+namespace frictionlab::dynamics::paper {
+namespace {
+
+// Samples to reserve at most (the recorder grows beyond if needed).
+constexpr std::size_t kMaxReserve = 1'000'000;
+
+std::string fixed(double x, int digits) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*f", digits, x);
+  return buf;
+}
+
+std::string general(double x) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.4g", x);
+  return buf;
+}
+
+void run_one(RunResult& r, const RunnerOptions& options, std::atomic<double>* progress_t) {
+  const RunSpec& spec = r.spec;
+  const Scenario scenario = load_scenario(spec.scenario_file, spec.overrides);
+  const auto law = friction::make_law(spec.law);
+  r.weight = scenario.body.mass * scenario.contact.g;
+  r.t_end = scenario.run.t_end;
+  SeriesRecorder recorder(r.weight, progress_t);
+  recorder.series().reserve(
+      std::min<std::size_t>(kMaxReserve, static_cast<std::size_t>(scenario.run.t_end / scenario.run.output_dt) + 2));
+  const ScenarioRun run = run_scenario(scenario, *law, spec.out_dir, &recorder, options.cancel);
+  r.summary = run.summary;
+  r.executed = true;
+
+  RunSeries& s = recorder.series();
+  r.features = extract_features(s, r.thresholds);
+  {
+    std::ofstream json(spec.out_dir / "features.json");
+    write_features_json(json, r.features, r.thresholds);
+    if (!json) throw std::runtime_error("cannot write '" + (spec.out_dir / "features.json").string() + "'");
+  }
+  if (!options.plot_data_dir.empty()) write_figure_data(options.plot_data_dir, spec.group() + "-" + spec.label, s);
+  r.gamma3_smooth = moving_average(s.t, s.gamma3, r.thresholds.smoothing_window);
+  r.t = std::move(s.t);
+  r.gamma3 = std::move(s.gamma3);
+}
+
+}  // namespace
+
+bool RunResult::ended_normally() const {
+  return executed && (summary.reason == Termination::t_end || summary.reason == Termination::rest ||
+                      summary.reason == Termination::rolling);
+}
+
+bool RunResult::stagnated() const {
+  return executed && (summary.reason == Termination::rest || summary.reason == Termination::rolling);
+}
+
+int worker_count(int jobs) {
+  if (jobs > 0) return jobs;
+  const unsigned hw = std::thread::hardware_concurrency();
+  return hw > 0 ? static_cast<int>(hw) : 1;
+}
+
+std::string describe(const RunResult& r) {
+  if (!r.executed) return "not run: " + r.error;
+  std::string out = std::string(to_string(r.summary.reason)) + " at t = " + general(r.summary.t_final) + " s, " +
+                    fixed(r.summary.wall_time, 2) + " s wall, " + std::to_string(r.summary.rhs_calls) + " RHS calls";
+  if (!r.ended_normally() && !r.summary.message.empty()) out += " (" + r.summary.message + ")";
+  if (!r.error.empty()) out += "; " + r.error;
+  return out;
+}
+
+std::vector<RunResult> run_experiments(const std::vector<RunSpec>& specs, const RunnerOptions& options) {
+  options.thresholds.validate();
+  std::vector<RunResult> results(specs.size());
+  for (std::size_t i = 0; i < specs.size(); ++i) {
+    results[i].spec = specs[i];
+    results[i].thresholds = options.thresholds;
+  }
+  if (!options.plot_data_dir.empty()) std::filesystem::create_directories(options.plot_data_dir);
+
+  std::atomic<std::size_t> next{0};
+  const int workers = std::min<int>(worker_count(options.jobs), static_cast<int>(std::max<std::size_t>(1, specs.size())));
+  const auto work = [&](int slot) {
+    std::atomic<double> own_t{0.0};
+    std::atomic<double>* progress_t = options.progress ? options.progress->slot_time(slot) : &own_t;
+    while (true) {
+      const std::size_t i = next.fetch_add(1);
+      if (i >= specs.size()) return;
+      RunResult& r = results[i];
+      if (options.cancel && options.cancel->load()) {
+        r.error = "skipped (interrupted before it started)";
+        continue;
+      }
+      if (options.progress) {
+        double t_end = 0.0;
+        try {
+          t_end = load_scenario(r.spec.scenario_file, r.spec.overrides).run.t_end;
+        } catch (const std::exception&) {
+        }
+        options.progress->started(slot, r.name(), t_end);
+      }
+      try {
+        run_one(r, options, progress_t);
+      } catch (const std::exception& e) {
+        // Not an early stop (those are results): the run could not be made or written.
+        r.error = e.what();
+      }
+      if (options.progress) options.progress->finished(slot, "done  " + r.name() + ": " + describe(r));
+    }
+  };
+  std::vector<std::thread> pool;
+  for (int w = 1; w < workers; ++w) pool.emplace_back(work, w);
+  work(0);
+  for (auto& th : pool) th.join();
+  return results;
+}
+
+}  // namespace frictionlab::dynamics::paper
