@@ -8,6 +8,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "friction/gsl_error_policy.h"
+
 namespace frictionlab::dynamics {
 
 Polynomial::Polynomial(std::vector<double> ascending) : c_(std::move(ascending)) {
@@ -75,10 +77,9 @@ std::vector<double> real_roots(const Polynomial& p, double imag_tol) {
   }
   std::vector<double> z(2 * static_cast<std::size_t>(n));
   gsl_poly_complex_workspace* w = gsl_poly_complex_workspace_alloc(static_cast<std::size_t>(n) + 1);
-  gsl_error_handler_t* old = gsl_set_error_handler_off();
+  use_gsl_status_codes();
   const int status = gsl_poly_complex_solve(p.coefficients().data(), static_cast<std::size_t>(n) + 1, w,
                                             z.data());
-  gsl_set_error_handler(old);
   gsl_poly_complex_workspace_free(w);
   if (status != GSL_SUCCESS) throw std::runtime_error("real_roots: GSL root finder did not converge");
   const Polynomial dp = p.derivative();

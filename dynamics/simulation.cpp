@@ -11,6 +11,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "friction/gsl_error_policy.h"
+
 namespace frictionlab::dynamics {
 namespace {
 
@@ -154,7 +156,7 @@ std::string_view to_string(Termination t) {
 RunSummary simulate(const BodyOnPlane& sys, const StateVector& x0, const RunOptions& options, Observer* observer) {
   options.validate();
   if (!x0.allFinite()) throw std::invalid_argument("the initial state is not finite");
-  gsl_set_error_handler_off();
+  use_gsl_status_codes();
 
   const auto wall_start = std::chrono::steady_clock::now();
   const IntegratorOptions& io = options.integrator;

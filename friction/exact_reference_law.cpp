@@ -1,5 +1,6 @@
 #include "friction/exact_reference_law.h"
 
+
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_integration.h>
 
@@ -12,6 +13,8 @@
 #include <stdexcept>
 #include <string>
 #include <utility>
+
+#include "friction/gsl_error_policy.h"
 
 namespace frictionlab::friction {
 namespace {
@@ -39,13 +42,6 @@ Workspace make_workspace() {
   return w;
 }
 
-void switch_gsl_errors_off() {
-  static const bool done = [] {
-    gsl_set_error_handler_off();
-    return true;
-  }();
-  (void)done;
-}
 
 enum class Component { kF1, kF2, kM };
 
@@ -173,7 +169,7 @@ FrictionForces ExactReferenceLaw::do_evaluate(const ContactInput& in) const {
     if (in.U == 0.0) return {};  // indeterminate at U = Omega = 0: documented as zero
     return {kN, 0.0, 0.0};       // pure sliding
   }
-  switch_gsl_errors_off();
+  use_gsl_status_codes();
   Problem pb;
   pb.s = (in.U / in.a) / std::abs(in.Omega);
   pb.sigma = in.Omega > 0.0 ? 1.0 : -1.0;

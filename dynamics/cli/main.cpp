@@ -14,6 +14,7 @@ int main(int argc, char** argv) {
   frictionlab::cli::register_friction_command(app);
   frictionlab::cli::register_simulate_command(app);
   frictionlab::cli::register_accuracy_command(app);
+  frictionlab::cli::register_paper_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

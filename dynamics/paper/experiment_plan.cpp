@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cstdio>
 #include <set>
 #include <stdexcept>
 
@@ -35,6 +36,13 @@ std::string shortest(double x) {
   char buf[32];
   const auto r = std::to_chars(buf, buf + sizeof buf, x);
   return std::string(buf, r.ptr);
+}
+
+// Three significant digits: 1e-9 * 0.1 is "1e-10", not "1.0000000000000002e-10".
+std::string tolerance(double x) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.3g", x);
+  return buf;
 }
 
 }  // namespace
@@ -116,11 +124,11 @@ std::vector<RunSpec> plan_runs(const PlanOptions& options) {
         RunSpec r = base;
         r.law = std::string(kReferenceLaw);
         r.baseline = true;
-        const double abs_tol = checked.run.integrator.abs_tol * kBaselineToleranceFactor;
-        const double rel_tol = checked.run.integrator.rel_tol * kBaselineToleranceFactor;
-        r.label = r.law + "-tol" + shortest(abs_tol);
-        r.overrides.push_back("run.abs_tol=" + shortest(abs_tol));
-        r.overrides.push_back("run.rel_tol=" + shortest(rel_tol));
+        const std::string abs_tol = tolerance(checked.run.integrator.abs_tol * kBaselineToleranceFactor);
+        const std::string rel_tol = tolerance(checked.run.integrator.rel_tol * kBaselineToleranceFactor);
+        r.label = r.law + "-tol" + abs_tol;
+        r.overrides.push_back("run.abs_tol=" + abs_tol);
+        r.overrides.push_back("run.rel_tol=" + rel_tol);
         (void)load_scenario(r.scenario_file, r.overrides);
         r.out_dir = group_dir / r.label;
         runs.push_back(std::move(r));

@@ -10,6 +10,7 @@
 #include "dynamics/paper/feature_json.h"
 #include "dynamics/paper/figure_data.h"
 #include "dynamics/paper/run_series.h"
+#include "dynamics/body.h"
 #include "dynamics/scenario.h"
 #include "dynamics/scenario_run.h"
 #include "friction/registry.h"
@@ -38,6 +39,8 @@ void run_one(RunResult& r, const RunnerOptions& options, std::atomic<double>* pr
   const auto law = friction::make_law(spec.law);
   r.weight = scenario.body.mass * scenario.contact.g;
   r.t_end = scenario.run.t_end;
+  const Body body = make_body(scenario.body);
+  r.low_pole = body.com - body.profile.z_lo() <= body.profile.z_hi() - body.com ? 1 : -1;
   SeriesRecorder recorder(r.weight, progress_t);
   recorder.series().reserve(
       std::min<std::size_t>(kMaxReserve, static_cast<std::size_t>(scenario.run.t_end / scenario.run.output_dt) + 2));
@@ -52,7 +55,8 @@ void run_one(RunResult& r, const RunnerOptions& options, std::atomic<double>* pr
     write_features_json(json, r.features, r.thresholds);
     if (!json) throw std::runtime_error("cannot write '" + (spec.out_dir / "features.json").string() + "'");
   }
-  if (!options.plot_data_dir.empty()) write_figure_data(options.plot_data_dir, spec.group() + "-" + spec.label, s);
+  if (!options.plot_data_dir.empty())
+    r.figure_ranges = write_figure_data(options.plot_data_dir, spec.group() + "-" + spec.label, s);
   r.gamma3_smooth = moving_average(s.t, s.gamma3, r.thresholds.smoothing_window);
   r.t = std::move(s.t);
   r.gamma3 = std::move(s.gamma3);

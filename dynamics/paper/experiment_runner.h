@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "dynamics/paper/experiment_plan.h"
+#include "dynamics/paper/figure_data.h"
 #include "dynamics/paper/run_features.h"
 #include "dynamics/paper/run_progress.h"
 #include "dynamics/simulation.h"
@@ -26,11 +27,14 @@ struct RunResult {
   RunSummary summary;     ///< valid when executed
   double weight = 0.0;    ///< m g, N
   double t_end = 0.0;     ///< s, the scenario's end time
+  /// +1 if the centre of mass is lowest with gamma3 = +1 (the pole at z_lo touching), else -1.
+  int low_pole = 0;
   FeatureThresholds thresholds;
   RunFeatures features;
   std::vector<double> t;              ///< s, samples (kept for the comparisons)
   std::vector<double> gamma3;         ///< at the samples
   std::vector<double> gamma3_smooth;  ///< moving average (thresholds.smoothing_window)
+  FigureRanges figure_ranges;         ///< axis caps of its figure data
 
   /// The run ended as the model intends: t_end, rest or rolling.
   [[nodiscard]] bool ended_normally() const;

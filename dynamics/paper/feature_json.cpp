@@ -28,13 +28,15 @@ void write_features_json(std::ostream& out, const RunFeatures& f, const FeatureT
   const Plateau& p = f.plateau;
   out << "{\n"
       << "  \"thresholds\": {\"vertical\": " << num(th.vertical) << ", \"near_vertical\": " << num(th.near_vertical)
-      << ", \"smoothing_window_s\": " << num(th.smoothing_window) << ", \"plateau_band\": " << num(th.plateau_band)
+      << ", \"smoothing_window_s\": " << num(th.smoothing_window) << ", \"plateau_window_s\": " << num(th.plateau_window) << ", \"plateau_band\": " << num(th.plateau_band)
       << ", \"plateau_rate_per_s\": " << num(th.plateau_rate) << ", \"plateau_min_move\": "
       << num(th.plateau_min_move) << ", \"first_move\": " << num(th.first_move) << "},\n"
       << "  \"t_final\": " << num(f.t_final) << ",\n"
       << "  \"gamma3_initial\": " << num(f.gamma3_initial) << ",\n"
       << "  \"gamma3_final\": " << num(f.gamma3_final) << ",\n"
+      << "  \"gamma3_final_mean\": " << num(f.gamma3_final_mean) << ",\n"
       << "  \"kinetic_final\": " << num(f.kinetic_final) << ",\n"
+      << "  \"max_abs_gamma3\": " << num(f.max_abs_gamma3) << ",\n"
       << "  \"first_move\": {\"direction\": " << f.first_move << ", \"t\": " << num(f.t_first_move) << "},\n"
       << "  \"vertical\": " << episode(f.vertical, f.t_final) << ",\n"
       << "  \"near_vertical\": " << episode(f.near_vertical, f.t_final) << ",\n"

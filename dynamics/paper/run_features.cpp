@@ -10,8 +10,9 @@ namespace frictionlab::dynamics::paper {
 namespace {
 
 void require(bool ok, const char* name, double value, const char* rule) {
-  if (!ok) throw std::invalid_argument(std::string("feature threshold ") + name + " = " + std::to_string(value) +
-                                       " is invalid: " + rule);
+  if (!ok)
+    throw std::invalid_argument(std::string("feature threshold ") + name + " = " + std::to_string(value) +
+                                " is invalid: " + rule);
 }
 
 int sign(double x) { return x > 0.0 ? 1 : (x < 0.0 ? -1 : 0); }
@@ -21,30 +22,26 @@ std::size_t index_at(const std::vector<double>& t, double x) {
   return static_cast<std::size_t>(std::lower_bound(t.begin(), t.end(), x) - t.begin());
 }
 
-// The vertical episode with entry at |gamma3| > level_in, exit when the moving average (pole side)
-// falls below level_out once its window lies after the entry.
+// Entry at |gamma3| > level_in; a spin that has ended when <gamma3>_1 (on the pole's side) has
+// reached `level_out`, fallen below it, and later fallen below `level_out - move_on`.
 VerticalEpisode vertical_episode(const RunSeries& s, const std::vector<double>& smooth, double level_in,
-                                 double level_out, double window) {
+                                 double level_out, double move_on) {
   VerticalEpisode e;
   const std::size_t n = s.size();
-  std::size_t i_in = n;
-  for (std::size_t i = 0; i < n; ++i) {
-    if (std::abs(s.gamma3[i]) > level_in) {
-      i_in = i;
-      break;
-    }
-  }
-  if (i_in == n) return e;
+  std::size_t i = 0;
+  while (i < n && !(std::abs(s.gamma3[i]) > level_in)) ++i;
+  if (i == n) return e;
   e.reached = true;
-  e.t_reached = s.t[i_in];
-  e.pole = sign(s.gamma3[i_in]);
-  for (std::size_t j = index_at(s.t, e.t_reached + 0.5 * window); j < n; ++j) {
-    if (smooth[j] * e.pole < level_out) {
-      e.left = true;
-      e.t_left = s.t[j];
-      break;
-    }
-  }
+  e.t_reached = s.t[i];
+  e.pole = sign(s.gamma3[i]);
+  while (i < n && smooth[i] * e.pole < level_out) ++i;  // the mean settles near the vertical
+  while (i < n && smooth[i] * e.pole >= level_out) ++i;  // ... and leaves it
+  if (i == n) return e;
+  const std::size_t left = i;
+  while (i < n && smooth[i] * e.pole >= level_out - move_on) ++i;  // ... for good
+  if (i == n) return e;
+  e.left = true;
+  e.t_left = s.t[left];
   return e;
 }
 
@@ -55,6 +52,8 @@ void FeatureThresholds::validate() const {
   require(std::isfinite(near_vertical) && near_vertical > 0.0 && near_vertical < vertical, "near_vertical",
           near_vertical, "it must be in (0, vertical)");
   require(std::isfinite(smoothing_window) && smoothing_window > 0.0, "smoothing_window", smoothing_window,
+          "it must be finite and > 0 s");
+  require(std::isfinite(plateau_window) && plateau_window > 0.0, "plateau_window", plateau_window,
           "it must be finite and > 0 s");
   require(std::isfinite(plateau_band) && plateau_band > 0.0, "plateau_band", plateau_band, "it must be finite and > 0");
   require(std::isfinite(plateau_rate) && plateau_rate > 0.0, "plateau_rate", plateau_rate,
@@ -68,16 +67,26 @@ double Plateau::tilt_deg() const { return std::acos(std::clamp(gamma3, -1.0, 1.0
 
 std::vector<double> moving_average(const std::vector<double>& t, const std::vector<double>& y, double window) {
   const std::size_t n = t.size();
-  std::vector<double> prefix(n + 1, 0.0);
-  for (std::size_t i = 0; i < n; ++i) prefix[i + 1] = prefix[i] + y[i];
-  std::vector<double> out(n);
-  std::size_t lo = 0;
-  std::size_t hi = 0;  // window = [lo, hi)
+  // Compensated (Neumaier) prefix sums: a 450 s run has 45 000 samples; plain prefix sums would
+  // lose ~1e-9 of the mean to cancellation.
+  std::vector<double> sum(n + 1, 0.0);
+  std::vector<double> comp(n + 1, 0.0);
   for (std::size_t i = 0; i < n; ++i) {
-    while (lo < i && t[lo] < t[i] - 0.5 * window) ++lo;
-    if (hi < i + 1) hi = i + 1;
-    while (hi < n && t[hi] <= t[i] + 0.5 * window) ++hi;
-    out[i] = (prefix[hi] - prefix[lo]) / static_cast<double>(hi - lo);
+    const double s1 = sum[i] + y[i];
+    comp[i + 1] = comp[i] + (std::abs(sum[i]) >= std::abs(y[i]) ? (sum[i] - s1) + y[i] : (y[i] - s1) + sum[i]);
+    sum[i + 1] = s1;
+  }
+  std::vector<double> out(n);
+  const double half = 0.5 * window;
+  std::size_t lo = 0;
+  std::size_t hi = 0;  // the window is [lo, hi)
+  for (std::size_t i = 0; i < n; ++i) {
+    // Samples on a grid sit exactly on the window's edges: include both, whatever the rounding.
+    const double slack = 1e-9 * (1.0 + std::abs(t[i]));
+    while (lo < i && t[lo] < t[i] - half - slack) ++lo;
+    hi = std::max(hi, i + 1);
+    while (hi < n && t[hi] <= t[i] + half + slack) ++hi;
+    out[i] = ((sum[hi] - sum[lo]) + (comp[hi] - comp[lo])) / static_cast<double>(hi - lo);
   }
   return out;
 }
@@ -89,11 +98,12 @@ RunFeatures extract_features(const RunSeries& s, const FeatureThresholds& th) {
   if (n == 0) return f;
   const auto& t = s.t;
   const auto& g = s.gamma3;
-  const double W = th.smoothing_window;
   f.t_final = t.back();
   f.gamma3_initial = g.front();
   f.gamma3_final = g.back();
   if (!s.kinetic.empty()) f.kinetic_final = s.kinetic.back();
+  f.max_abs_gamma3 = 0.0;
+  for (const double x : g) f.max_abs_gamma3 = std::max(f.max_abs_gamma3, std::abs(x));
 
   for (std::size_t i = 1; i < n; ++i) {
     if (std::abs(g[i] - g[0]) > th.first_move) {
@@ -103,46 +113,41 @@ RunFeatures extract_features(const RunSeries& s, const FeatureThresholds& th) {
     }
   }
 
-  const std::vector<double> smooth = moving_average(t, g, W);
-  f.vertical = vertical_episode(s, smooth, th.vertical, th.near_vertical, W);
-  f.near_vertical = vertical_episode(s, smooth, th.near_vertical, th.near_vertical, W);
+  const std::vector<double> mean1 = moving_average(t, g, th.smoothing_window);
+  {
+    const std::size_t from = index_at(t, t.back() - th.smoothing_window);
+    double sum = 0.0;
+    for (std::size_t i = from; i < n; ++i) sum += g[i];
+    f.gamma3_final_mean = sum / static_cast<double>(n - from);
+  }
+  f.vertical = vertical_episode(s, mean1, th.vertical, th.near_vertical, th.plateau_min_move);
+  f.near_vertical = vertical_episode(s, mean1, th.near_vertical, th.near_vertical, th.plateau_min_move);
 
-  // The plateau: the fast tilt after the vertical spin (or from the start) has ended.
+  // The plateau: where the fast tilt after the vertical spin (or from the start) ends.
+  const std::vector<double> mean5 = moving_average(t, g, th.plateau_window);
+  const double half = 0.5 * th.plateau_window;
   Plateau& p = f.plateau;
   const std::size_t i0 = f.vertical.left ? index_at(t, f.vertical.t_left) : 0;
   p.t_from = t[std::min(i0, n - 1)];
-  const double anchor = i0 == 0 ? g[0] : smooth[i0];
-  const double t_lo = t.front() + 0.5 * W;
-  const double t_hi = t.back() - 0.5 * W;
+  const double anchor = i0 == 0 ? g[0] : mean5[i0];
   std::size_t i_p = n;
-  {
-    std::size_t lo = 0;
-    std::size_t hi = 0;
-    for (std::size_t i = i0; i < n && t[i] <= t_hi; ++i) {
-      if (t[i] < t_lo) continue;
-      while (lo < i && t[lo] < t[i] - 0.5 * W) ++lo;
-      if (hi < i) hi = i;
-      while (hi + 1 < n && t[hi + 1] <= t[i] + 0.5 * W) ++hi;
-      if (t[hi] <= t[lo]) continue;
-      const double rate = (smooth[hi] - smooth[lo]) / (t[hi] - t[lo]);
-      if (std::abs(smooth[i] - anchor) > th.plateau_min_move && std::abs(rate) < th.plateau_rate) {
-        i_p = i;
-        break;
-      }
+  for (std::size_t i = std::max(i0, index_at(t, t.front() + half)); i < n && t[i] <= t.back() - half; ++i) {
+    const std::size_t lo = index_at(t, t[i] - half);
+    const std::size_t hi = std::min(n - 1, index_at(t, t[i] + half));
+    if (!(t[hi] > t[lo])) continue;
+    const double rate = (mean5[hi] - mean5[lo]) / (t[hi] - t[lo]);
+    if (std::abs(mean5[i] - anchor) > th.plateau_min_move && std::abs(rate) < th.plateau_rate) {
+      i_p = i;
+      break;
     }
   }
-  std::size_t i_end = n;
   if (i_p < n) {
     p.found = true;
     p.t_start = t[i_p];
-    p.gamma3 = smooth[i_p];
-    for (std::size_t j = i_p + 1; j < n; ++j) {
-      if (std::abs(smooth[j] - p.gamma3) > th.plateau_band) {
-        i_end = j;
-        break;
-      }
-    }
-    p.lasts_to_end = i_end == n;
+    p.gamma3 = mean5[i_p];
+    std::size_t i_end = i_p + 1;
+    while (i_end < n && std::abs(mean5[i_end] - p.gamma3) <= th.plateau_band) ++i_end;
+    p.lasts_to_end = i_end >= n;
     p.t_end = p.lasts_to_end ? t.back() : t[i_end];
 
     const int dir = sign(p.gamma3 - g[0]);
@@ -153,9 +158,9 @@ RunFeatures extract_features(const RunSeries& s, const FeatureThresholds& th) {
     if (!p.lasts_to_end) {
       double hi_dev = -std::numeric_limits<double>::infinity();
       double lo_dev = std::numeric_limits<double>::infinity();
-      for (std::size_t j = i_end; j < n && t[j] <= t_hi; ++j) {
-        hi_dev = std::max(hi_dev, g[j] - smooth[j]);
-        lo_dev = std::min(lo_dev, g[j] - smooth[j]);
+      for (std::size_t j = i_end; j < n && !(std::abs(g[j]) > th.vertical); ++j) {
+        hi_dev = std::max(hi_dev, g[j] - mean1[j]);
+        lo_dev = std::min(lo_dev, g[j] - mean1[j]);
       }
       if (hi_dev >= lo_dev) f.descent_oscillation = hi_dev - lo_dev;
     }

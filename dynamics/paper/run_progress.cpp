@@ -36,14 +36,20 @@ void RunProgress::started(int slot, const std::string& name, double t_end) {
   s.name = name;
   s.t_end = t_end;
   s.busy = true;
-  print_line("[" + std::to_string(done_) + "/" + std::to_string(total_) + " done] start " + name);
+  print_line(counter() + "start " + name);
 }
 
 void RunProgress::finished(int slot, const std::string& line) {
   std::lock_guard lock(mutex_);
   slots_[static_cast<std::size_t>(slot)].busy = false;
   ++done_;
-  print_line("[" + std::to_string(done_) + "/" + std::to_string(total_) + " done] " + line);
+  print_line(counter() + line);
+}
+
+std::string RunProgress::counter() const {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "[%d/%d done] ", done_, total_);
+  return buf;
 }
 
 void RunProgress::print_line(const std::string& line) {

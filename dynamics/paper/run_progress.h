@@ -41,6 +41,7 @@ class RunProgress {
     double t_end = 0.0;
     bool busy = false;
   };
+  [[nodiscard]] std::string counter() const;  // "[3/30 done] "; mutex_ held
   void print_line(const std::string& line);  // mutex_ held
   void draw_status();                         // mutex_ held
   void clear_status();                        // mutex_ held

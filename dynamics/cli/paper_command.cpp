@@ -1,0 +1,130 @@
+// `frictionlab paper --out DIR [--laws L,...] [--eggs E,...] [--cases a,b,c] [--jobs N] [--set key=value]...`:
+// the paper's experiments (section 2 of Munitsyna 2013) with every law, in parallel, with figures,
+// comparisons and a report (docs/experiments.md). Writes DIR/runs/<egg>-<case>/<law>/,
+// DIR/plots/, DIR/experiments.md and CSV tables; progress on stderr, one summary line on stdout.
+// Exit code 0 when every run ran (a law stopping early at its pole is a result, not an error) and
+// every figure was drawn; 3 when some run could not run, the job was interrupted or a figure is
+// missing (everything else is still written); 1 for bad input (one line, nothing run).
+
+#include <unistd.h>
+
+#include <atomic>
+#include <csignal>
+#include <cstdio>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "dynamics/cli/commands.h"
+#include "dynamics/paper/experiment_job.h"
+
+namespace frictionlab::cli {
+namespace {
+
+constexpr int kExitIncomplete = 3;
+
+std::atomic<bool> g_paper_interrupted{false};
+extern "C" void on_paper_signal(int) { g_paper_interrupted.store(true); }
+
+struct PaperCliOptions {
+  std::string out;
+  std::string laws;
+  std::string eggs;
+  std::string cases;
+  std::string scenarios;
+  int jobs = 0;
+  std::vector<std::string> set;
+  bool no_baseline = false;
+  bool no_figures = false;
+  std::string command;
+};
+
+std::string join(const std::vector<std::string>& v) {
+  std::string out;
+  for (const auto& s : v) out += (out.empty() ? "" : ",") + s;
+  return out;
+}
+
+void run(const PaperCliOptions& opt) {
+  namespace paper = dynamics::paper;
+  paper::JobOptions job;
+  job.plan.out_dir = opt.out;
+  job.plan.scenario_dir = opt.scenarios.empty() ? paper::default_scenario_dir() : std::filesystem::path(opt.scenarios);
+  if (!opt.laws.empty()) job.plan.laws = paper::split_list(opt.laws, "--laws");
+  if (!opt.eggs.empty()) job.plan.eggs = paper::split_list(opt.eggs, "--eggs");
+  if (!opt.cases.empty()) job.plan.cases = paper::split_list(opt.cases, "--cases");
+  job.plan.overrides = opt.set;
+  job.plan.baseline = !opt.no_baseline;
+  if (opt.jobs < 0) throw std::invalid_argument("--jobs = " + std::to_string(opt.jobs) + " is invalid: it must be >= 0 (0: one per core)");
+  job.jobs = opt.jobs;
+  job.figures = !opt.no_figures;
+  job.log = stderr;
+  job.live_status = isatty(STDERR_FILENO) != 0;
+  job.cancel = &g_paper_interrupted;
+  job.command = opt.command;
+
+  g_paper_interrupted.store(false);
+  auto* previous_int = std::signal(SIGINT, on_paper_signal);
+  auto* previous_term = std::signal(SIGTERM, on_paper_signal);
+  paper::JobOutcome outcome;
+  try {
+    outcome = paper::run_paper_job(job);
+  } catch (...) {
+    std::signal(SIGINT, previous_int);
+    std::signal(SIGTERM, previous_term);
+    throw;
+  }
+  std::signal(SIGINT, previous_int);
+  std::signal(SIGTERM, previous_term);
+
+  int early = 0;
+  for (const auto& r : outcome.results)
+    if (r.executed && !r.ended_normally()) ++early;
+  std::printf("paper: %zu runs (%d stopped early, %d not run), %zu figures in %.1f s; wrote %s\n",
+              outcome.results.size(), early, outcome.not_run, outcome.figures.size(), outcome.wall_time,
+              (std::filesystem::path(opt.out) / "experiments.md").c_str());
+  std::fflush(stdout);
+  if (!opt.no_figures)
+    for (const auto& e : outcome.figure_errors) std::fprintf(stderr, "frictionlab: paper: %s\n", e.c_str());
+  if (outcome.interrupted) std::fprintf(stderr, "frictionlab: paper: interrupted; the report covers what ran\n");
+  for (const auto& r : outcome.results)
+    if (!r.error.empty()) std::fprintf(stderr, "frictionlab: paper: %s: %s\n", r.name().c_str(), r.error.c_str());
+  if (outcome.interrupted || outcome.not_run > 0 || (!opt.no_figures && !outcome.figure_errors.empty()))
+    throw CLI::RuntimeError(kExitIncomplete);
+}
+
+}  // namespace
+
+void register_paper_command(CLI::App& app) {
+  namespace paper = dynamics::paper;
+  auto opt = std::make_shared<PaperCliOptions>();
+  auto* cmd = app.add_subcommand(
+      "paper", "Reproduce the paper's experiments (cases a, b, c; both egg readings) with every law, in parallel, "
+               "with figures and a report (docs/experiments.md)");
+  cmd->add_option("--out", opt->out, "Output directory (created if needed)")->required();
+  cmd->add_option("--laws", opt->laws, "Laws, comma-separated (default: " + join(paper::default_laws()) + ")");
+  cmd->add_option("--eggs", opt->eggs, "Egg readings (default: " + join(paper::known_eggs()) + ")");
+  cmd->add_option("--cases", opt->cases, "Cases (default: " + join(paper::known_cases()) + ")");
+  cmd->add_option("--jobs", opt->jobs, "Runs in parallel (default 0: one per core)");
+  cmd->add_option("--set", opt->set, "Override a scenario key in every run, e.g. --set run.t_end=60 (repeatable)")
+      ->allow_extra_args(false);
+  cmd->add_option("--scenarios", opt->scenarios,
+                  "Folder of <egg>-<case>.toml (default: data/scenarios here, else the source tree's)");
+  cmd->add_flag("--no-baseline", opt->no_baseline,
+                "Skip the reference law rerun with tolerances x0.1 (the chaos floor of the comparison)");
+  cmd->add_flag("--no-figures", opt->no_figures, "Write the plot data and gnuplot scripts but do not run gnuplot");
+  cmd->callback([opt] {
+    opt->command = "frictionlab paper";
+    for (const auto& [name, value] : std::vector<std::pair<std::string, std::string>>{
+             {"--out", opt->out}, {"--laws", opt->laws}, {"--eggs", opt->eggs}, {"--cases", opt->cases},
+             {"--scenarios", opt->scenarios}})
+      if (!value.empty()) opt->command += " " + name + " " + value;
+    if (opt->jobs != 0) opt->command += " --jobs " + std::to_string(opt->jobs);
+    for (const auto& s : opt->set) opt->command += " --set " + s;
+    if (opt->no_baseline) opt->command += " --no-baseline";
+    if (opt->no_figures) opt->command += " --no-figures";
+    run(*opt);
+  });
+}
+
+}  // namespace frictionlab::cli

@@ -1,0 +1,120 @@
+#include "dynamics/paper/experiment_job.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <ctime>
+#include <map>
+#include <memory>
+
+#include "dynamics/paper/experiment_report.h"
+#include "dynamics/paper/figure_scripts.h"
+#include "dynamics/paper/run_progress.h"
+#include "dynamics/scenario.h"
+
+namespace frictionlab::dynamics::paper {
+namespace {
+
+std::string now_text() {
+  const std::time_t t = std::time(nullptr);
+  char buf[64];
+  std::strftime(buf, sizeof buf, "%Y-%m-%d %H:%M:%S %Z", std::localtime(&t));
+  return buf;
+}
+
+std::string short_num(double x) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.4g", x);
+  return buf;
+}
+
+// "gamma3(0) = 0.97, omega(0) = (0, 0, 100) 1/s" from the scenario as run.
+std::string initial_description(const RunSpec& spec) {
+  try {
+    const Scenario s = load_scenario(spec.scenario_file, spec.overrides);
+    const auto& w = s.initial.omega;
+    return "γ_3(0) = " + short_num(s.initial.gamma.normalized()[2]) + ", ω(0) = (" +
+           short_num(w[0]) + ", " + short_num(w[1]) + ", " + short_num(w[2]) + ") 1/s";
+  } catch (const std::exception&) {
+    return "";
+  }
+}
+
+std::vector<FigureGroup> figure_groups(const std::vector<RunResult>& results) {
+  std::vector<FigureGroup> groups;
+  for (const auto& r : results) {
+    if (r.spec.baseline || !r.executed) continue;
+    auto it = std::find_if(groups.begin(), groups.end(),
+                           [&](const FigureGroup& g) { return g.egg == r.spec.egg && g.case_id == r.spec.case_id; });
+    if (it == groups.end()) {
+      groups.push_back({r.spec.egg, r.spec.case_id, initial_description(r.spec), {}});
+      it = groups.end() - 1;
+    }
+    FigureRun fr;
+    fr.label = r.spec.label;
+    fr.stem = r.spec.group() + "-" + r.spec.label;
+    fr.stopped_early = !r.ended_normally();
+    fr.ranges = r.figure_ranges;
+    if (fr.stopped_early) fr.note = std::string(to_string(r.summary.reason)) + " at t = " + short_num(r.summary.t_final) + " s";
+    it->runs.push_back(fr);
+  }
+  return groups;
+}
+
+}  // namespace
+
+JobOutcome run_paper_job(const JobOptions& options) {
+  const std::vector<RunSpec> specs = plan_runs(options.plan);  // all input errors surface here
+  const auto start = std::chrono::steady_clock::now();
+  const std::string date = now_text();
+  const std::filesystem::path out = options.plan.out_dir;
+  const std::filesystem::path plots = out / "plots";
+  std::filesystem::create_directories(out);
+
+  JobOutcome outcome;
+  const int workers = std::min<int>(worker_count(options.jobs), static_cast<int>(specs.size()));
+  {
+    std::unique_ptr<RunProgress> progress;
+    if (options.log) progress = std::make_unique<RunProgress>(static_cast<int>(specs.size()), workers, options.log,
+                                                              options.live_status);
+    RunnerOptions ro;
+    ro.jobs = workers;
+    ro.plot_data_dir = plots / "data";
+    ro.cancel = options.cancel;
+    ro.progress = progress.get();
+    outcome.results = run_experiments(specs, ro);
+  }
+  for (const auto& r : outcome.results) {
+    if (!r.executed || !r.error.empty()) ++outcome.not_run;
+    if (r.executed && r.summary.reason == Termination::interrupted) outcome.interrupted = true;
+  }
+  if (options.cancel && options.cancel->load()) outcome.interrupted = true;
+
+  const std::vector<FigureGroup> groups = figure_groups(outcome.results);
+  const std::vector<std::string> scripts = write_figure_scripts(plots, groups);
+  if (options.figures) {
+    outcome.figure_errors = render_figures(plots, scripts);
+  } else {
+    outcome.figure_errors.push_back("--no-figures: scripts written to " + plots.string() + ", not drawn");
+  }
+  for (const auto& s : scripts) {
+    const std::string png = std::filesystem::path(s).replace_extension(".png").string();
+    if (std::filesystem::exists(plots / png)) outcome.figures.push_back(png);
+  }
+
+  const std::vector<LawComparison> comparisons = compare_runs(outcome.results);
+  const std::vector<NarrativeVerdicts> verdicts = judge_narrative(outcome.results);
+  outcome.wall_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  ReportContext ctx;
+  ctx.command = options.command;
+  ctx.date = date;
+  ctx.machine = machine_description();
+  ctx.jobs = workers;
+  ctx.wall_time = outcome.wall_time;
+  ctx.figures = outcome.figures;
+  ctx.figure_errors = outcome.figure_errors;
+  write_report(out, outcome.results, comparisons, verdicts, ctx);
+  return outcome;
+}
+
+}  // namespace frictionlab::dynamics::paper

@@ -1,0 +1,348 @@
+#include "dynamics/paper/experiment_report.h"
+
+#include <sys/utsname.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <stdexcept>
+#include <thread>
+
+#include "dynamics/paper/figure_data.h"
+#include "dynamics/state.h"
+
+namespace frictionlab::dynamics::paper {
+namespace {
+
+std::string num(double x, const char* format = "%.4g") {
+  if (!std::isfinite(x)) return "–";
+  char buf[64];
+  std::snprintf(buf, sizeof buf, format, x);
+  return buf;
+}
+
+std::string csv_num(double x) {
+  if (!std::isfinite(x)) return "";
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.10g", x);
+  return buf;
+}
+
+std::string csv_text(const std::string& s) {
+  if (s.find_first_of(",\"\n") == std::string::npos) return s;
+  std::string out = "\"";
+  for (const char c : s) out += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return out + "\"";
+}
+
+std::string md_cell(std::string s) {
+  for (std::size_t p = 0; (p = s.find('|', p)) != std::string::npos; p += 2) s.replace(p, 1, "\\|");
+  return s;
+}
+
+void open_or_throw(std::ofstream& out, const std::filesystem::path& p) {
+  out.open(p);
+  if (!out) throw std::runtime_error("cannot write '" + p.string() + "'");
+}
+
+double work_sliding(const RunResult& r) { return r.executed ? slide_work(r.summary.x_final) : kNaN; }
+double work_spinning(const RunResult& r) { return r.executed ? spin_work(r.summary.x_final) : kNaN; }
+
+std::string reason(const RunResult& r) {
+  return r.executed ? std::string(to_string(r.summary.reason)) : std::string("not run");
+}
+
+const RunResult* reference_of(const std::vector<RunResult>& results, const RunResult& r) {
+  for (const auto& x : results)
+    if (x.spec.group() == r.spec.group() && !x.spec.baseline && x.spec.law == kReferenceLaw && x.executed) return &x;
+  return nullptr;
+}
+
+std::string pole_text(int pole) { return pole > 0 ? "+1" : (pole < 0 ? "-1" : "–"); }
+
+std::string vertical_cell(const RunFeatures& f) {
+  if (!f.vertical.reached) return "–";
+  return num(f.vertical.t_reached) + " (" + pole_text(f.vertical.pole) + (f.vertical.left ? "" : ", final") + ")";
+}
+
+std::string duration_cell(const VerticalEpisode& e, double t_final) {
+  if (!e.reached) return "–";
+  return e.left ? num(e.duration(t_final)) : "to end";
+}
+
+std::string plateau_cell(const Plateau& p) {
+  if (!p.found) return "–";
+  return num(p.gamma3, "%.3f") + " (" + num(p.tilt_deg(), "%.1f") + "°)";
+}
+
+}  // namespace
+
+std::vector<LawComparison> compare_runs(const std::vector<RunResult>& results, double threshold) {
+  std::vector<LawComparison> out;
+  for (const auto& r : results) {
+    if (!r.executed || (!r.spec.baseline && r.spec.law == kReferenceLaw)) continue;
+    const RunResult* ref = reference_of(results, r);
+    if (ref == nullptr) continue;
+    LawComparison c;
+    c.run = &r;
+    c.reference = ref;
+    const double dt = ref->t.size() > 1 ? ref->t[1] - ref->t[0] : 1.0;
+    c.raw = first_divergence(ref->t, ref->gamma3, r.t, r.gamma3, threshold, dt);
+    c.smooth = first_divergence(ref->t, ref->gamma3_smooth, r.t, r.gamma3_smooth, threshold, dt);
+    if (r.stagnated() && ref->stagnated()) c.stagnation_difference = r.summary.t_final - ref->summary.t_final;
+    c.final_gamma3_difference = r.features.gamma3_final_mean - ref->features.gamma3_final_mean;
+    c.final_tilt_difference_deg = tilt_difference_deg(r.features.gamma3_final_mean, ref->features.gamma3_final_mean);
+    out.push_back(c);
+  }
+  return out;
+}
+
+std::vector<NarrativeVerdicts> judge_narrative(const std::vector<RunResult>& results, const NarrativeRules& rules) {
+  std::vector<std::pair<std::string, std::string>> keys;  // (egg, label) in order of appearance
+  for (const auto& r : results) {
+    const auto key = std::make_pair(r.spec.egg, r.spec.label);
+    if (std::find(keys.begin(), keys.end(), key) == keys.end()) keys.push_back(key);
+  }
+  std::vector<NarrativeVerdicts> out;
+  for (const auto& [egg, label] : keys) {
+    CaseRuns runs;
+    for (const auto& r : results) {
+      if (r.spec.egg != egg || r.spec.label != label) continue;
+      if (r.spec.case_id == "a") runs.a = &r;
+      if (r.spec.case_id == "b") runs.b = &r;
+      if (r.spec.case_id == "c") runs.c = &r;
+    }
+    out.push_back({egg, label, check_narrative(runs, rules)});
+  }
+  return out;
+}
+
+std::string machine_description() {
+  std::string out;
+  utsname u{};
+  if (uname(&u) == 0) out = std::string(u.sysname) + " " + u.release + " " + u.machine;
+  std::ifstream cpu("/proc/cpuinfo");
+  for (std::string line; std::getline(cpu, line);) {
+    if (line.rfind("model name", 0) == 0) {
+      const auto colon = line.find(':');
+      if (colon != std::string::npos) out += ", " + line.substr(line.find_first_not_of(' ', colon + 1));
+      break;
+    }
+  }
+  out += " (" + std::to_string(std::thread::hardware_concurrency()) + " logical cores)";
+  return out;
+}
+
+void write_report(const std::filesystem::path& out_dir, const std::vector<RunResult>& results,
+                  const std::vector<LawComparison>& comparisons, const std::vector<NarrativeVerdicts>& verdicts,
+                  const ReportContext& context) {
+  std::filesystem::create_directories(out_dir);
+
+  // behaviour.csv: one row per run.
+  {
+    std::ofstream csv;
+    open_or_throw(csv, out_dir / "behaviour.csv");
+    csv << "egg,case,law,label,baseline,reason,message,t_final_s,steps,rejected_steps,rhs_calls,wall_time_s,liftoffs,"
+           "min_N_over_mg,work_sliding_J,work_spinning_J,t_vertical_s,vertical_pole,vertical_left,vertical_spin_s,"
+           "near_vertical_s,plateau_t_start_s,plateau_gamma3,plateau_tilt_deg,tilt_time_s,plateau_duration_s,"
+           "gamma3_final,gamma3_final_mean,kinetic_final_J,descent_oscillation,sampled_liftoffs,sampled_liftoffs_before_plateau,error\n";
+    for (const auto& r : results) {
+      const RunFeatures& f = r.features;
+      const Plateau& p = f.plateau;
+      csv << r.spec.egg << ',' << r.spec.case_id << ',' << r.spec.law << ',' << r.spec.label << ','
+          << (r.spec.baseline ? 1 : 0) << ',' << reason(r) << ',' << csv_text(r.executed ? r.summary.message : "")
+          << ',' << csv_num(r.executed ? r.summary.t_final : kNaN) << ',' << (r.executed ? r.summary.steps : 0) << ','
+          << (r.executed ? r.summary.rejected_steps : 0) << ',' << (r.executed ? r.summary.rhs_calls : 0) << ','
+          << csv_num(r.executed ? r.summary.wall_time : kNaN) << ',' << (r.executed ? r.summary.liftoffs : 0) << ','
+          << csv_num(r.executed ? r.summary.min_normal_force / r.weight : kNaN) << ',' << csv_num(work_sliding(r))
+          << ',' << csv_num(work_spinning(r)) << ',' << csv_num(f.vertical.t_reached) << ',' << f.vertical.pole << ','
+          << (f.vertical.left ? 1 : 0) << ',' << csv_num(f.vertical.duration(f.t_final)) << ','
+          << csv_num(f.near_vertical.duration(f.t_final)) << ',' << csv_num(p.t_start) << ',' << csv_num(p.gamma3)
+          << ',' << csv_num(p.found ? p.tilt_deg() : kNaN) << ',' << csv_num(p.found ? p.tilt_time() : kNaN) << ','
+          << csv_num(p.found ? p.duration() : kNaN) << ',' << csv_num(f.gamma3_final) << ',' << csv_num(f.gamma3_final_mean) << ','
+          << csv_num(f.kinetic_final) << ',' << csv_num(f.descent_oscillation) << ',' << f.sampled_liftoffs << ','
+          << f.sampled_liftoffs_before_plateau << ',' << csv_text(r.error) << '\n';
+    }
+  }
+  // comparison.csv: one row per compared run.
+  {
+    std::ofstream csv;
+    open_or_throw(csv, out_dir / "comparison.csv");
+    csv << "egg,case,law,label,threshold,divergence_t_s,divergence_smooth_t_s,compared_up_to_s,"
+           "stagnation_difference_s,final_gamma3_difference,final_tilt_difference_deg,work_sliding_J,work_spinning_J,"
+           "wall_time_s,rhs_calls\n";
+    for (const auto& c : comparisons) {
+      const RunResult& r = *c.run;
+      csv << r.spec.egg << ',' << r.spec.case_id << ',' << r.spec.law << ',' << r.spec.label << ','
+          << csv_num(kDivergenceThreshold) << ',' << csv_num(c.raw.found ? c.raw.t : kNaN) << ','
+          << csv_num(c.smooth.found ? c.smooth.t : kNaN) << ',' << csv_num(c.raw.horizon) << ','
+          << csv_num(c.stagnation_difference) << ',' << csv_num(c.final_gamma3_difference) << ','
+          << csv_num(c.final_tilt_difference_deg) << ',' << csv_num(work_sliding(r)) << ','
+          << csv_num(work_spinning(r)) << ',' << csv_num(r.summary.wall_time) << ',' << r.summary.rhs_calls << '\n';
+    }
+  }
+  // narrative.csv: one row per claim, egg and law.
+  {
+    std::ofstream csv;
+    open_or_throw(csv, out_dir / "narrative.csv");
+    csv << "egg,law,claim_id,claim,verdict,evidence\n";
+    for (const auto& v : verdicts)
+      for (const auto& c : v.checks)
+        csv << v.egg << ',' << v.law << ',' << c.id << ',' << csv_text(c.claim) << ',' << to_string(c.verdict) << ','
+            << csv_text(c.evidence) << '\n';
+  }
+
+  std::ofstream md;
+  open_or_throw(md, out_dir / "experiments.md");
+  md << "# The paper's experiments (Munitsyna 2013, section 2): generated report\n\n"
+     << "Written by `frictionlab paper`; docs/experiments.md explains every column and rule.\n\n"
+     << "* command: `" << context.command << "`\n"
+     << "* started: " << context.date << "\n"
+     << "* machine: " << context.machine << "\n"
+     << "* worker threads: " << context.jobs << "; whole job: " << num(context.wall_time, "%.1f") << " s wall\n"
+     << "* runs: `runs/<egg>-<case>/<law>/` (trajectory.csv, summary.json, scenario.toml, features.json); "
+        "figures and their gnuplot scripts: `plots/`\n\n";
+
+  md << "## Runs and behaviour\n\n"
+     << "Times in s. *vertical*: first `|gamma3| > 0.999` (pole; *final* = only in the final position); *spin*: "
+        "from then until the 1-s mean of `|gamma3|` falls below 0.99; *near*: the same from the first `|gamma3| > "
+        "0.99`; *plateau*: `gamma3` (tilt of the axis from the upward vertical) where the fast tilt ends, *tilt*: how "
+        "long the tilt took, *held*: how long its 5-s mean stays within ±0.05; *final γ3*: mean over the last second; *lift-offs*: counted at every step; "
+        "`W`: work against sliding / spinning friction (J).\n\n"
+     << "| run | end | t end | vertical | spin | near | plateau | tilt | held | final γ3 | lift-offs | min N/mg | "
+        "W slide | W spin |\n"
+     << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+  for (const auto& r : results) {
+    const RunFeatures& f = r.features;
+    const Plateau& p = f.plateau;
+    if (!r.executed) {
+      md << "| " << r.name() << " | not run: " << md_cell(r.error) << " |||||||||||||\n";
+      continue;
+    }
+    md << "| " << r.name() << " | " << reason(r) << " | " << num(r.summary.t_final) << " | " << vertical_cell(f)
+       << " | " << duration_cell(f.vertical, f.t_final) << " | " << duration_cell(f.near_vertical, f.t_final)
+       << " | " << plateau_cell(p) << " | " << (p.found ? num(p.tilt_time()) : "–") << " | "
+       << (p.found ? num(p.duration()) + (p.lasts_to_end ? " (end)" : "") : "–") << " | "
+       << num(f.gamma3_final_mean, "%.3f") << " | " << r.summary.liftoffs << " | "
+       << num(r.summary.min_normal_force / r.weight, "%.3f") << " | " << num(work_sliding(r), "%.1f") << " | "
+       << num(work_spinning(r), "%.1f") << " |\n";
+  }
+  md << "\n";
+  bool any_stop = false;
+  for (const auto& r : results) {
+    if (r.executed && r.ended_normally() && r.error.empty()) continue;
+    if (!any_stop) md << "Runs that stopped early or failed:\n\n";
+    any_stop = true;
+    md << "* " << r.name() << ": " << describe(r) << "\n";
+  }
+  if (any_stop) md << "\n";
+
+  md << "## The paper's narrative\n\n"
+     << "Rules: *quickly*/*briefly* = within 10 % of the run; *much longer* = at least 2x; *the same angle* = within "
+        "5°; *oscillates* (b) = peak-to-peak of `gamma3` about its 1-s mean after the plateau at least 2x case a's; "
+        "*a series of lift-offs* = at least 2 seen in the 100-Hz samples before the plateau. *partly*: holds only "
+        "in a weaker reading (given in the evidence); *n/a*: the run stopped before it could show the feature. The "
+        "`" << kReferenceLaw << "-tol…` column is the reference law with tolerances x0.1: where its verdict differs "
+        "from the reference's, chance (the chaotic bouncing phase) decides the claim.\n\n";
+  std::vector<std::string> eggs;
+  for (const auto& v : verdicts)
+    if (std::find(eggs.begin(), eggs.end(), v.egg) == eggs.end()) eggs.push_back(v.egg);
+  for (const auto& egg : eggs) {
+    std::vector<const NarrativeVerdicts*> of_egg;
+    for (const auto& v : verdicts)
+      if (v.egg == egg) of_egg.push_back(&v);
+    md << "### " << egg << "\n\n| claim |";
+    for (const auto* v : of_egg) md << " " << v->law << " |";
+    md << "\n|---|";
+    for (std::size_t i = 0; i < of_egg.size(); ++i) md << "---|";
+    md << "\n";
+    // Claims in the order of the first law that has them.
+    std::vector<std::pair<std::string, std::string>> claims;
+    for (const auto* v : of_egg)
+      for (const auto& c : v->checks)
+        if (std::none_of(claims.begin(), claims.end(), [&](const auto& x) { return x.first == c.id; }))
+          claims.emplace_back(c.id, c.claim);
+    for (const auto& [id, text] : claims) {
+      md << "| " << id << ": " << md_cell(text) << " |";
+      for (const auto* v : of_egg) {
+        const auto it = std::find_if(v->checks.begin(), v->checks.end(), [&](const auto& c) { return c.id == id; });
+        md << " " << (it == v->checks.end() ? std::string("–") : std::string(to_string(it->verdict))) << " |";
+      }
+      md << "\n";
+    }
+    md << "\n";
+    for (const auto* v : of_egg) {
+      md << "<details><summary>" << egg << ", " << v->law << ": evidence</summary>\n\n";
+      for (const auto& c : v->checks)
+        md << "* **" << c.id << "** (" << to_string(c.verdict) << ") " << c.claim << ": " << c.evidence << "\n";
+      md << "\n</details>\n\n";
+    }
+  }
+
+  md << "## Trajectory error against `" << kReferenceLaw << "`\n\n"
+     << "*first |Δγ3| > 0.05*: first time the sampled `gamma3` of the two runs differ by more than "
+     << kDivergenceThreshold
+     << " (linear interpolation on the sample grid), *1-s mean*: the same for the moving averages (nutation "
+        "removed); `>T` = never up to T (the end of the shorter run). *Δ t stag*: difference in the time the "
+        "contact reaches the stagnation region (rest or rolling). *Δ tilt*: difference in the final tilt of the "
+        "axis. The `" << kReferenceLaw << "-tol…` row is the reference law rerun with tolerances x0.1: how early "
+        "two equally exact runs part (the motion is chaotic in its bouncing phases).\n\n"
+     << "| case | law | first \\|Δγ3\\| > 0.05 (s) | 1-s mean (s) | Δ t stag (s) | final γ3 | Δ tilt (°) | W slide (J) "
+        "| W spin (J) | spin share | wall (s) | RHS calls |\n"
+     << "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+  const auto divergence_cell = [](const Divergence& d) {
+    if (d.found) return num(d.t);
+    std::string s = ">";
+    s += num(d.horizon);
+    return s;
+  };
+  for (const auto& r : results) {
+    if (!r.executed) continue;
+    const double ws = work_sliding(r);
+    const double wp = work_spinning(r);
+    const std::string share = num(100.0 * wp / (ws + wp), "%.0f") + " %";
+    const std::string final_g3 = num(r.features.gamma3_final_mean, "%.3f");
+    if (!r.spec.baseline && r.spec.law == kReferenceLaw) {
+      md << "| " << r.spec.group() << " | **" << r.spec.label << "** | – | – | – | " << final_g3 << " | – | "
+         << num(ws, "%.1f") << " | " << num(wp, "%.1f") << " | " << share << " | "
+         << num(r.summary.wall_time, "%.2f") << " | " << r.summary.rhs_calls << " |\n";
+      continue;
+    }
+    const auto it = std::find_if(comparisons.begin(), comparisons.end(), [&](const auto& c) { return c.run == &r; });
+    if (it == comparisons.end()) continue;
+    md << "| " << r.spec.group() << " | " << r.spec.label << (r.ended_normally() ? "" : " (" + reason(r) + ")")
+       << " | " << divergence_cell(it->raw) << " | " << divergence_cell(it->smooth) << " | "
+       << num(it->stagnation_difference, "%+.4g") << " | " << final_g3 << " | "
+       << num(it->final_tilt_difference_deg, "%.1f") << " | " << num(ws, "%.1f") << " | " << num(wp, "%.1f")
+       << " | " << share << " | " << num(r.summary.wall_time, "%.2f") << " | " << r.summary.rhs_calls << " |\n";
+  }
+  md << "\n";
+
+  md << "## Cost of case a to the stagnation region, per law\n\n"
+     << "Wall time as measured inside each run (integration and CSV output), with " << context.jobs
+     << " runs in parallel; *ns/RHS* = wall time per right-hand-side evaluation; *ratio* = wall time over "
+        "`pade-reconstructed`'s for the same egg (the target: `exact` within 2x).\n\n"
+     << "| egg | law | end | t end (s) | steps | RHS calls | wall (s) | ns/RHS | ratio |\n"
+     << "|---|---|---|---|---|---|---|---|---|\n";
+  for (const auto& r : results) {
+    if (!r.executed || r.spec.case_id != "a") continue;
+    double ref_wall = kNaN;
+    for (const auto& x : results)
+      if (x.executed && !x.spec.baseline && x.spec.egg == r.spec.egg && x.spec.case_id == "a" &&
+          x.spec.law == "pade-reconstructed")
+        ref_wall = x.summary.wall_time;
+    md << "| " << r.spec.egg << " | " << r.spec.label << " | " << reason(r) << " | " << num(r.summary.t_final)
+       << " | " << r.summary.steps << " | " << r.summary.rhs_calls << " | " << num(r.summary.wall_time, "%.3f")
+       << " | " << num(1e9 * r.summary.wall_time / static_cast<double>(std::max(1L, r.summary.rhs_calls)), "%.0f")
+       << " | " << num(r.summary.wall_time / ref_wall, "%.2f") << " |\n";
+  }
+  md << "\n## Figures\n\n";
+  for (const auto& f : context.figures) md << "* [plots/" << f << "](plots/" << f << ")\n";
+  for (const auto& e : context.figure_errors) md << "* not drawn: " << e << "\n";
+  if (!md) throw std::runtime_error("writing '" + (out_dir / "experiments.md").string() + "' failed");
+}
+
+}  // namespace frictionlab::dynamics::paper

@@ -1,0 +1,79 @@
+// The grid of the paper's runs (dynamics/paper/experiment_plan.h): names, folders, overrides.
+
+#include "dynamics/paper/experiment_plan.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace frictionlab::dynamics::paper {
+namespace {
+
+PlanOptions options() {
+  PlanOptions o;
+  o.out_dir = "/tmp/frictionlab-plan-test";  // nothing is written by plan_runs
+  o.scenario_dir = std::filesystem::path(FRICTIONLAB_SOURCE_DIR) / "data" / "scenarios";
+  return o;
+}
+
+TEST(PaperExperimentPlan, DefaultGridHasEveryEggCaseLawAndABaseline) {
+  const auto runs = plan_runs(options());
+  ASSERT_EQ(runs.size(), 2u * 3u * (default_laws().size() + 1));
+  const RunSpec& first = runs.front();
+  EXPECT_EQ(first.egg, "egg-printed");
+  EXPECT_EQ(first.case_id, "a");
+  EXPECT_EQ(first.law, "exact");
+  EXPECT_EQ(first.out_dir, std::filesystem::path("/tmp/frictionlab-plan-test/runs/egg-printed-a/exact"));
+  EXPECT_EQ(first.scenario_file.filename(), "egg-printed-a.toml");
+  EXPECT_EQ(first.overrides.front(), "run.output_dt=0.01");
+
+  const RunSpec& baseline = runs[default_laws().size()];
+  EXPECT_TRUE(baseline.baseline);
+  EXPECT_EQ(baseline.law, "exact");
+  EXPECT_EQ(baseline.label, "exact-tol1e-10");  // the scenarios' 1e-9 x 0.1, printed cleanly
+  EXPECT_EQ(baseline.overrides.back(), "run.rel_tol=1e-10");
+}
+
+TEST(PaperExperimentPlan, UserOverridesComeAfterThePaperDefaults) {
+  PlanOptions o = options();
+  o.eggs = {"egg-homogeneous"};
+  o.cases = {"c"};
+  o.laws = {"pade-reconstructed"};
+  o.overrides = {"run.t_end=2", "run.output_dt=0.05"};
+  const auto runs = plan_runs(o);
+  ASSERT_EQ(runs.size(), 1u);  // no reference law: no baseline
+  EXPECT_EQ(runs[0].group(), "egg-homogeneous-c");
+  EXPECT_EQ(runs[0].overrides, (std::vector<std::string>{"run.output_dt=0.01", "run.t_end=2", "run.output_dt=0.05"}));
+}
+
+TEST(PaperExperimentPlan, BadNamesAndOverridesAreRejectedBeforeAnythingRuns) {
+  const auto rejects = [](auto change, const std::string& needle) {
+    PlanOptions o = options();
+    change(o);
+    try {
+      (void)plan_runs(o);
+      ADD_FAILURE() << "accepted; expected an error containing '" << needle << "'";
+    } catch (const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find(needle), std::string::npos) << e.what();
+    }
+  };
+  rejects([](PlanOptions& o) { o.laws = {"exact", "no-such-law"}; }, "unknown name 'no-such-law'");
+  rejects([](PlanOptions& o) { o.eggs = {"egg-boiled"}; }, "--eggs");
+  rejects([](PlanOptions& o) { o.cases = {"a", "a"}; }, "given twice");
+  rejects([](PlanOptions& o) { o.cases = {}; }, "--cases is empty");
+  rejects([](PlanOptions& o) { o.out_dir.clear(); }, "--out");
+  rejects([](PlanOptions& o) { o.overrides = {"run.t_edn=1"}; }, "t_edn");
+  rejects([](PlanOptions& o) { o.scenario_dir = "/no/such/folder"; }, "does not exist");
+}
+
+TEST(PaperExperimentPlan, SplitList) {
+  EXPECT_EQ(split_list("a, b ,c", "--cases"), (std::vector<std::string>{"a", "b", "c"}));
+  EXPECT_EQ(split_list("exact", "--laws"), (std::vector<std::string>{"exact"}));
+  EXPECT_THROW((void)split_list("a,,b", "--cases"), std::invalid_argument);
+  EXPECT_THROW((void)split_list("", "--cases"), std::invalid_argument);
+  EXPECT_THROW((void)split_list("a,", "--cases"), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace frictionlab::dynamics::paper
