@@ -94,10 +94,9 @@ TEST(MollerEllipsoidalLaw, SymmetriesAndDissipationOnRandomInputs) {
 
 TEST(MollerEllipsoidalLaw, AgainstTheExactLaw) {
   // For a circle the law is exact in both pure limits; in between, and for ellipses, it is an
-  // approximation. Largest errors on the study grid (docs/pade-reconstruction.md §7):
-  // F1 0.541 kN, F2 0.210 kN (the law has no F2), M 0.275 kNa, all at mu = 0.05. The bounds, ~10%
-  // above, guard against regressions of Rb or of the exact law.
-  constexpr double kF1Bound = 0.6, kF2Bound = 0.23, kMBound = 0.3;
+  // approximation whose errors the accuracy study measures (docs/accuracy.md). Here: the pure
+  // limits, and that it stays within the exact law's bounds and signs everywhere on a grid:
+  // 0 <= F1 <= kN, M of the sign of the exact M (the sign of Omega).
   // The exact law is accurate to ~1e-13 kN; the pure limits agree to that.
   constexpr double kExactTol = 1e-12;
   const ExactLaw exact;
@@ -106,24 +105,22 @@ TEST(MollerEllipsoidalLaw, AgainstTheExactLaw) {
   EXPECT_NEAR(circle_spin.M, exact.evaluate({0.0, 3.0, 1.0, 1.0, 0.0, 1.0, 1.0}).M, kExactTol);
   EXPECT_NEAR(law.evaluate({2.0, 0.0, 1.0, 0.3, 0.5, 1.0, 1.0}).F1,
               exact.evaluate({2.0, 0.0, 1.0, 0.3, 0.5, 1.0, 1.0}).F1, kExactTol);
-  double e1 = 0.0, e2 = 0.0, em = 0.0;
   for (double mu : {0.05, 0.1, 0.2, 0.35, 0.5, 0.7, 0.85, 1.0}) {
     for (int j = 0; j <= 12; ++j) {
       const double psi = pi * j / 12.0;
       for (int i = 0; i <= 120; ++i) {
         const double s = std::pow(10.0, -3.0 + 6.0 * i / 120.0);
-        const ContactInput in{s, 1.0, 1.0, mu, psi, 1.0, 1.0};
-        const auto r = law.evaluate(in);
-        const auto e = exact.evaluate(in);
-        e1 = std::max(e1, std::abs(r.F1 - e.F1));
-        e2 = std::max(e2, std::abs(r.F2 - e.F2));
-        em = std::max(em, std::abs(r.M - e.M));
+        for (const double Omega : {-1.0, 1.0}) {
+          const ContactInput in{s, Omega, 1.0, mu, psi, 1.0, 1.0};
+          const auto r = law.evaluate(in);
+          const auto e = exact.evaluate(in);
+          EXPECT_GE(r.F1, 0.0);
+          EXPECT_LE(r.F1, 1.0);
+          EXPECT_GT(r.M * e.M, 0.0) << "mu = " << mu << ", s = " << s;
+        }
       }
     }
   }
-  EXPECT_LT(e1, kF1Bound);
-  EXPECT_LT(e2, kF2Bound);
-  EXPECT_LT(em, kMBound);
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "friction/exact_law.h"
+#include "friction/pade_printed_law.h"
 
 #include <boost/math/special_functions/ellint_1.hpp>
 #include <boost/math/special_functions/ellint_2.hpp>
@@ -347,36 +348,43 @@ TEST(PadeReconstructedLaw, AgreesWithTheExactLawAtBothEnds) {
   }
 }
 
-TEST(PadeReconstructedLaw, ErrorAgainstTheExactLawIsBounded) {
-  // Largest errors on the study grid (docs/pade-reconstruction.md §6; 241 s x 20 mu x 25 psi):
-  // F1 0.848 kN, F2 0.187 kN, M 0.131 kNa. They are set by the forms (8) themselves, not by the
-  // coefficients (for a circle the matched F1 coefficients are the printed ones and F1 is still off
-  // by 0.22 kN). The bounds below, ~7% above, guard against regressions of the coefficients or of
-  // the exact law; the other assertions are physics: no pole, right sign of F2.
-  constexpr double kF1Bound = 0.9, kF2Bound = 0.2, kMBound = 0.14;
+TEST(PadeReconstructedLaw, BeatsThePrintedLawWhereItWasBrokenAndKeepsTheSignOfF2) {
+  // What the reconstruction set out to fix, checked against independent references rather than
+  // against its own measured errors: F2 has the exact law's sign wherever that is clearly nonzero;
+  // F1 stays within the friction limit [0, kN] and |M| within the exact pure-spin torque M0
+  // (the exact law satisfies both); and its largest F2 and M errors are below those of the printed
+  // law on the same grid (the printed law has real poles there). F1 keeps the form of (8), whose
+  // error the reconstruction does not claim to reduce (docs/pade-reconstruction.md).
   const ExactLaw exact;
   const PadeReconstructedLaw law;
-  double e1 = 0.0, e2 = 0.0, em = 0.0;
+  const PadePrintedLaw printed;
+  double rec_F2 = 0.0, rec_M = 0.0, printed_F2 = 0.0, printed_M = 0.0;
   for (double mu : {0.05, 0.1, 0.15, 0.2, 0.35, 0.5, 0.7, 0.85, 1.0}) {
+    const double M0 = 0.375 * boost::math::ellint_2(std::sqrt(1.0 - mu * mu));  // per kNa
     for (int j = 0; j <= 24; ++j) {
       const double psi = pi * j / 24.0;
       for (int i = 0; i <= 120; ++i) {
         const double s = std::pow(10.0, -3.0 + 6.0 * i / 120.0);
-        const auto r = law.evaluate(unit_patch(s, -1.0, mu, psi));
-        const auto e = exact.evaluate(unit_patch(s, -1.0, mu, psi));
-        e1 = std::max(e1, std::abs(r.F1 - e.F1));
-        e2 = std::max(e2, std::abs(r.F2 - e.F2));
-        em = std::max(em, std::abs(r.M - e.M));
-        // Wherever the exact F2 is clearly nonzero, the reconstructed one has its sign.
+        const auto in = unit_patch(s, -1.0, mu, psi);
+        const auto r = law.evaluate(in);
+        const auto e = exact.evaluate(in);
+        const auto p = printed.evaluate(in);
+        EXPECT_GE(r.F1, 0.0);
+        EXPECT_LE(r.F1, 1.0 + 1e-15);
+        EXPECT_LE(std::abs(r.M), M0 * (1.0 + 1e-12)) << "mu = " << mu << ", s = " << s;
         if (std::abs(e.F2) > 1e-6) {
           EXPECT_GT(r.F2 * e.F2, 0.0) << "mu = " << mu << ", psi = " << psi << ", s = " << s;
         }
+        rec_F2 = std::max(rec_F2, std::abs(r.F2 - e.F2));
+        rec_M = std::max(rec_M, std::abs(r.M - e.M));
+        // A non-finite printed value (exactly at a pole) counts as an infinite error.
+        printed_F2 = std::max(printed_F2, std::isfinite(p.F2) ? std::abs(p.F2 - e.F2) : HUGE_VAL);
+        printed_M = std::max(printed_M, std::isfinite(p.M) ? std::abs(p.M - e.M) : HUGE_VAL);
       }
     }
   }
-  EXPECT_LT(e1, kF1Bound);
-  EXPECT_LT(e2, kF2Bound);
-  EXPECT_LT(em, kMBound);
+  EXPECT_LT(rec_F2, printed_F2);
+  EXPECT_LT(rec_M, printed_M);
 }
 
 }  // namespace
