@@ -2,6 +2,7 @@
 // Runs the built `frictionlab` binary through the shell and captures what it prints.
 
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <array>
 #include <cstdio>
@@ -20,6 +21,13 @@ struct CommandResult {
 inline std::string slurp(const std::filesystem::path& p) {
   std::ifstream in(p);
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+/// An empty path under the temporary directory, unique to this process: `frictionlab_<tag>_<pid>`.
+inline std::filesystem::path fresh_temp_dir(const std::string& tag) {
+  const auto dir = std::filesystem::temp_directory_path() / ("frictionlab_" + tag + "_" + std::to_string(::getpid()));
+  std::filesystem::remove_all(dir);
+  return dir;
 }
 
 /// Runs `FRICTIONLAB_EXE args` (args are shell words, may include `< file`).

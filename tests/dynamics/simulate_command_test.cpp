@@ -15,12 +15,7 @@ using testing::slurp;
 
 const std::string kScenarios = std::string(FRICTIONLAB_SOURCE_DIR) + "/data/scenarios/";
 
-std::filesystem::path fresh_dir(const std::string& name) {
-  const auto dir =
-      std::filesystem::temp_directory_path() / ("frictionlab_simulate_" + name + "_" + std::to_string(::getpid()));
-  std::filesystem::remove_all(dir);
-  return dir;
-}
+std::filesystem::path fresh_dir(const std::string& name) { return testing::fresh_temp_dir("simulate_" + name); }
 
 TEST(DynSimulateCommand, AShortRunWritesCsvAndSummary) {
   const auto dir = fresh_dir("ok");

@@ -15,12 +15,7 @@ namespace {
 using testing::run_frictionlab;
 using testing::slurp;
 
-std::filesystem::path fresh_dir(const std::string& name) {
-  const auto dir =
-      std::filesystem::temp_directory_path() / ("frictionlab_paper_" + name + "_" + std::to_string(::getpid()));
-  std::filesystem::remove_all(dir);
-  return dir;
-}
+std::filesystem::path fresh_dir(const std::string& name) { return testing::fresh_temp_dir("paper_" + name); }
 
 TEST(PaperCommand, BadOptionsGiveOneLineAndExitOne) {
   const auto dir = fresh_dir("bad");
