@@ -1,6 +1,8 @@
 #pragma once
 // What a run reports while it goes: samples on the output grid (and at the end), and progress.
 
+#include <stdexcept>
+
 #include "dynamics/equations_of_motion.h"
 #include "dynamics/state.h"
 
@@ -15,10 +17,25 @@ struct Sample {
   double kinetic = 0.0;       ///< kinetic energy, J
 };
 
+/// Thrown by an observer whose output failed (a write or close error, a full disk): the run stops
+/// at once with reason "output-error", keeping the last good state.
+class OutputFailure : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// Thrown by an observer whose output would exceed its documented size limit: the run stops with
+/// reason "output-limit" (what was written stays valid).
+class OutputLimitReached : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
 class Observer {
  public:
   virtual ~Observer() = default;
-  /// At t = 0, at every multiple of the output interval, and once at the final time.
+  /// At t = 0, at every multiple of the output interval, and once at the final time. May throw
+  /// OutputFailure or OutputLimitReached (the run stops; see above).
   virtual void sample(const Sample& s) = 0;
   /// After every accepted step (cheap; for progress display).
   virtual void step(double /*t*/) {}

@@ -1,6 +1,7 @@
 #include "friction/law.h"
 
 #include <cmath>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 
@@ -19,6 +20,11 @@ void require_finite(const char* name, double value) {
 }
 
 }  // namespace
+
+PoleDenominators FrictionLaw::pole_denominators(const ContactInput& /*in*/) const {
+  constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+  return {nan, nan, nan};
+}
 
 void validate(const ContactInput& in) {
   require_finite("U", in.U);

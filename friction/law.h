@@ -1,7 +1,7 @@
 #pragma once
 // The interface every friction law of frictionlab implements.
 //
-// Conventions (docs/model.md, from ../shared/docs/model-notes.md §1): the contact patch is an
+// Conventions (docs/model.md): the contact patch is an
 // ellipse with semi-axes a >= b > 0 in the plane of contact, gamma the upward unit normal.
 // e1 is the direction of the sliding velocity of the patch centre (speed U >= 0),
 // e2 = gamma x e1, Omega = omega . gamma the signed spin, psi the angle from e1 to the major axis,
@@ -31,6 +31,13 @@ struct FrictionForces {
   double M = 0.0;   ///< N m, about -gamma
 };
 
+/// The denominators of a rational law's outputs at one contact, divided by (a Omega)^2 (a positive
+/// factor: only their signs matter). A law is singular (has a pole) where one of them changes sign
+/// along a motion; NaN marks an output that has no denominator there. Regular laws have none.
+struct PoleDenominators {
+  double F1, F2, M;
+};
+
 /// Throws std::invalid_argument naming the offending value and the rule it breaks.
 void validate(const ContactInput& in);
 
@@ -44,6 +51,13 @@ class FrictionLaw {
   [[nodiscard]] virtual std::string_view name() const = 0;
   /// One line: what the law is and where it comes from.
   [[nodiscard]] virtual std::string_view summary() const = 0;
+
+  /// True if the law has denominators that can vanish at valid input (its singular set), which
+  /// pole_denominators() then returns. Callers watch their signs (simulation events, accuracy
+  /// study) instead of branching on the law's name.
+  [[nodiscard]] virtual bool has_poles() const { return false; }
+  /// The denominators at `in` (validated input with Omega != 0); all NaN for a law without poles.
+  [[nodiscard]] virtual PoleDenominators pole_denominators(const ContactInput& in) const;
 
   /// Validates `in` (std::invalid_argument on bad input), then evaluates the law.
   [[nodiscard]] FrictionForces evaluate(const ContactInput& in) const {

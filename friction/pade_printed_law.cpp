@@ -1,6 +1,7 @@
 #include "friction/pade_printed_law.h"
 
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 namespace frictionlab::friction {
@@ -36,6 +37,18 @@ std::string_view PadePrintedLaw::summary() const {
   return alpha_ == PadeAlpha::major
              ? "Pade formulas (8)-(9) of Munitsyna (2013) as printed, alpha = major semi-axis"
              : "Pade formulas (8)-(9) of Munitsyna (2013) as printed, alpha = min(a, b)";
+}
+
+PoleDenominators PadePrintedLaw::pole_denominators(const ContactInput& in) const {
+  const double mu = in.b / in.a;
+  const double c = alpha_ == PadeAlpha::major ? 1.0 : mu;
+  const double s = in.U / (in.a * std::abs(in.Omega));
+  const auto k = pade_printed_coefficients(mu, in.psi);
+  PoleDenominators d{};
+  d.F1 = s * s + k.a1 * c * s + k.a2 * c * c;
+  d.F2 = std::isinf(k.a4) ? std::numeric_limits<double>::quiet_NaN() : s * s + k.a3 * c * s + k.a4 * c * c;
+  d.M = k.b2 * s * s + k.b1 * c * s + c * c;
+  return d;
 }
 
 FrictionForces PadePrintedLaw::do_evaluate(const ContactInput& in) const {

@@ -2,7 +2,7 @@
 // The Padé law of the source paper, formulas (8)-(9), exactly as printed.
 //
 // Provenance: M.A. Munitsyna, "Dynamics of a body of revolution on a horizontal plane within the
-// interconnected model of friction" (2013), eqs. (8)-(9) (../shared/seed/, OCR), an approximation
+// interconnected model of friction" (2013), eqs. (8)-(9) (received 20.11.2012; Russian; docs/model.md cites it), an approximation
 // of the exact law over the elliptic Hertz patch by the same author (2012). With F0 = kN,
 // alpha = a (the major semi-axis; the text also says min{a, b}: see pade-printed-minor, issue 4),
 // mu = b/a, s-terms written in U and alpha|Omega|:
@@ -19,7 +19,7 @@
 //            d5 = (1 - mu^(1/4)) cos 2psi + mu^(1/4),   d6 = (1 - mu^(1/4)) sin 2psi.
 //   The printed a0 = (8/(3 pi)) mu^(3/4)/d5 and b0 = (15 pi/16) mu^(1/2)/d3 are never used.
 //
-// Oddities kept on purpose (model-notes §2; the accuracy study measures them): b1 < 0; F2 is odd in
+// Oddities kept on purpose (docs/model.md; the accuracy study measures them): b1 < 0; F2 is odd in
 // Omega while the exact F2 is even; a4 < 0, so the denominator of F2 vanishes at a real slip ratio
 // (a pole); d5 < 0 for mu < 1/16 near cos 2psi = -1 changes the signs of a1, b1, b2.
 //
@@ -56,6 +56,13 @@ class PadePrintedLaw final : public FrictionLaw {
   explicit PadePrintedLaw(PadeAlpha alpha = PadeAlpha::major) : alpha_(alpha) {}
   [[nodiscard]] std::string_view name() const override;
   [[nodiscard]] std::string_view summary() const override;
+  /// The printed signs let the F2 denominator of eq. (8) vanish (a4 < 0), and the M denominator
+  /// for small mu: both are watched.
+  [[nodiscard]] bool has_poles() const override { return true; }
+  /// Eq. (8)'s three denominators divided by (a Omega)^2, with U = s a|Omega|, alpha = c a:
+  ///   F1: s^2 + a1 c s + a2 c^2,   F2: s^2 + a3 c s + a4 c^2 (NaN where a4 is infinite),
+  ///   M:  b2 s^2 + b1 c s + c^2;   c = 1 (alpha = a) or mu (alpha = b).
+  [[nodiscard]] PoleDenominators pole_denominators(const ContactInput& in) const override;
 
  private:
   [[nodiscard]] FrictionForces do_evaluate(const ContactInput& in) const override;
