@@ -1,11 +1,13 @@
 # The install tree as a user meets it (tests/package/CMakeLists.txt registers the steps with ctest).
-#   cmake -DSTEP=install|consumer|build-tree|options-off|subproject -DFRICTIONLAB_SOURCE_DIR=... -DFRICTIONLAB_BUILD_DIR=... \
+#   cmake -DSTEP=install|consumer|build-tree|command|options-off|subproject -DFRICTIONLAB_SOURCE_DIR=... -DFRICTIONLAB_BUILD_DIR=... \
 #         -DWORK_DIR=... -DCONSUMER_SOURCE_DIR=... -DCXX_COMPILER=... [-DCXX_COMPILER_LAUNCHER=...] \
 #         [-DBUILD_TYPE=...] [-DCONSUMER_FLAGS=...] -P install_tree_check.cmake
 # install:  a fresh `cmake --install` into WORK_DIR/prefix; the files a user needs are there, and
 #           every installed header's "..." includes resolve inside the installed include folder.
 # consumer: tests/consumer configured with CMAKE_PREFIX_PATH=prefix (find_package), built and run.
 # build-tree: tests/consumer configured against the build tree's package (frictionlab_DIR=build).
+# command:  the installed `frictionlab paper` run from a folder without data/ reads the installed
+#           scenarios, not the source tree's.
 # options-off, subproject: frictionlab configured with tests and benchmarks off, and added to
 #           another project with add_subdirectory, on a machine without GoogleTest and Google
 #           Benchmark (CMAKE_DISABLE_FIND_PACKAGE_*): no test or benchmark target is generated.
@@ -103,6 +105,25 @@ elseif(STEP STREQUAL "build-tree")
       -Dfrictionlab_DIR=${FRICTIONLAB_BUILD_DIR} -DCMAKE_CXX_COMPILER=${CXX_COMPILER})
   message(STATUS "the consumer configures against ${FRICTIONLAB_BUILD_DIR}")
 
+elseif(STEP STREQUAL "command")
+  # A folder without data/scenarios, so that only the installed scenarios can be found.
+  set(run_dir ${WORK_DIR}/command-cwd)
+  file(REMOVE_RECURSE ${run_dir})
+  file(MAKE_DIRECTORY ${run_dir})
+  run("the installed frictionlab paper" ${prefix}/bin/frictionlab paper --out out --laws coulomb-decoupled
+      --eggs egg-printed --cases a --no-baseline --no-figures --jobs 1 --set run.t_end=0.01)
+  # Every run writes the scenario file it read on the first line of its scenario.toml.
+  file(STRINGS ${run_dir}/out/runs/egg-printed-a/coulomb-decoupled/scenario.toml first LIMIT_COUNT 1)
+  file(REAL_PATH ${prefix}/share/frictionlab/scenarios/egg-printed-a.toml expected)
+  if(NOT first MATCHES "^# (.*) after overrides")
+    message(FATAL_ERROR "unexpected first line of scenario.toml: ${first}")
+  endif()
+  file(REAL_PATH ${CMAKE_MATCH_1} read)
+  if(NOT read STREQUAL expected)
+    message(FATAL_ERROR "the installed command read ${read}, not the installed ${expected}")
+  endif()
+  message(STATUS "the installed command read ${read}")
+
 elseif(STEP STREQUAL "options-off" OR STEP STREQUAL "subproject")
   # Configure only, on a machine "without" GoogleTest and Google Benchmark.
   set(build ${WORK_DIR}/${STEP})
@@ -132,5 +153,5 @@ elseif(STEP STREQUAL "options-off" OR STEP STREQUAL "subproject")
   message(STATUS "${STEP}: configured without GoogleTest and Google Benchmark")
 
 else()
-  message(FATAL_ERROR "STEP=${STEP}: expected install, consumer, build-tree, options-off or subproject")
+  message(FATAL_ERROR "STEP=${STEP}: expected install, consumer, build-tree, command, options-off or subproject")
 endif()
