@@ -1,6 +1,6 @@
 #pragma once
-// Helpers shared by the dynamics tests: an Eigen comparison that prints both sides, small test
-// laws with known behaviour, and common bodies.
+// Helpers shared by the dynamics tests: small test laws with known behaviour and common bodies
+// (EXPECT_EIGEN_NEAR, from tests/support/eigen_near.h, compares Eigen objects).
 
 #include <gtest/gtest.h>
 
@@ -13,22 +13,10 @@
 #include <string>
 
 #include "dynamics/body.h"
+#include "tests/support/eigen_near.h"
 #include "friction/law.h"
 
 namespace frictionlab::testing {
-
-inline ::testing::AssertionResult vectors_near(const char* ea, const char* eb, const char* etol,
-                                               const Eigen::Vector3d& a, const Eigen::Vector3d& b, double tol) {
-  const double d = (a - b).norm();
-  if (d <= tol) return ::testing::AssertionSuccess();
-  std::ostringstream m;
-  m.precision(17);
-  m << "|" << ea << " - " << eb << "| = " << d << " > " << etol << " = " << tol << "\n  " << ea << " = ["
-    << a.transpose() << "]\n  " << eb << " = [" << b.transpose() << "]";
-  return ::testing::AssertionFailure() << m.str();
-}
-
-#define EXPECT_VEC_NEAR(a, b, tol) EXPECT_PRED_FORMAT3(::frictionlab::testing::vectors_near, a, b, tol)
 
 /// The brief's decoupled Coulomb law for a circular patch: F1 = kN when U > 0 (0 at U = 0),
 /// F2 = 0, M = (3 pi/16) k N a sign(Omega). Ignores b and psi. Counts its calls.
@@ -48,7 +36,7 @@ class CoulombCircleTestLaw final : public friction::FrictionLaw {
 };
 
 /// A smooth, coupled, dissipative law (the "ellipsoidal" law of Moller, Leine and Glocker,
-/// model-notes §1) with an extra F2 = kN U Omega a / (U^2 + (a Omega)^2 + a^2) so that every
+/// docs/model.md) with an extra F2 = kN U Omega a / (U^2 + (a Omega)^2 + a^2) so that every
 /// component of the friction is exercised: F1 = kN U / sqrt(U^2 + Rb^2 Omega^2), M = kN Rb^2 Omega
 /// / sqrt(...), Rb = (3 pi/16) sqrt(a b). F2 does no work (it is normal to the slip), so the law is
 /// dissipative. Zero at U = Omega = 0.
@@ -118,7 +106,7 @@ inline dynamics::Body sphere_body(double radius, double mass) {
   return dynamics::make_body(spec);
 }
 
-/// One of the paper's eggs (model-notes §4), m = 2 kg.
+/// One of the paper's eggs (docs/model.md), m = 2 kg.
 inline dynamics::Body egg_body(const std::string& preset) {
   dynamics::BodySpec spec;
   spec.preset = preset;
