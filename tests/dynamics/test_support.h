@@ -6,6 +6,7 @@
 
 #include <Eigen/Core>
 #include <atomic>
+#include <limits>
 #include <cmath>
 #include <numbers>
 #include <sstream>
@@ -13,6 +14,7 @@
 #include <string>
 
 #include "dynamics/body.h"
+#include "dynamics/state.h"
 #include "tests/support/eigen_near.h"
 #include "friction/law.h"
 
@@ -97,6 +99,32 @@ class ThrowingTestLaw final : public friction::FrictionLaw {
   }
 };
 
+/// The decoupled Coulomb forces of CoulombCircleTestLaw, and a declared singular set where the slip
+/// ratio s = U/(a |Omega|) passes s_pole: the F2 "denominator" is s - s_pole (through_zero = true,
+/// a pole) or 1/(s - s_pole) (false: it changes sign through infinity, which is no pole). The forces
+/// stay finite across it, so nothing but the watch of the denominators can notice the crossing.
+class DeclaredPoleTestLaw final : public friction::FrictionLaw {
+ public:
+  DeclaredPoleTestLaw(double s_pole, bool through_zero) : s_pole_(s_pole), through_zero_(through_zero) {}
+  [[nodiscard]] std::string_view name() const override { return "test-declared-pole"; }
+  [[nodiscard]] std::string_view summary() const override { return "finite forces, declared pole (tests)"; }
+  [[nodiscard]] bool has_poles() const override { return true; }
+  [[nodiscard]] friction::PoleDenominators pole_denominators(const friction::ContactInput& in) const override {
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    const double d = in.U / (in.a * std::abs(in.Omega)) - s_pole_;
+    return {nan, through_zero_ ? d : 1.0 / d, nan};
+  }
+
+ private:
+  [[nodiscard]] friction::FrictionForces do_evaluate(const friction::ContactInput& in) const override {
+    const double kN = in.k * in.N;
+    const double sgn = in.Omega > 0.0 ? 1.0 : (in.Omega < 0.0 ? -1.0 : 0.0);
+    return {in.U > 0.0 ? kN : 0.0, 0.0, 3.0 * std::numbers::pi / 16.0 * kN * in.a * sgn};
+  }
+  double s_pole_;
+  bool through_zero_;
+};
+
 /// A homogeneous sphere (m, R) with its centre of mass at the centre.
 inline dynamics::Body sphere_body(double radius, double mass) {
   dynamics::BodySpec spec;
@@ -112,6 +140,13 @@ inline dynamics::Body egg_body(const std::string& preset) {
   spec.preset = preset;
   spec.mass = 2.0;
   return dynamics::make_body(spec);
+}
+
+/// The paper's case a (docs/model.md): gamma3 = 0.97, gamma2 = 0, omega = (0, 0, 100) 1/s, v = 0,
+/// eps0 = -0.3e-4 m.
+inline dynamics::StateVector paper_case_a() {
+  return dynamics::make_state(Eigen::Vector3d::Zero(), {0.0, 0.0, 100.0},
+                              {std::sqrt(1.0 - 0.97 * 0.97), 0.0, 0.97}, -0.3e-4);
 }
 
 }  // namespace frictionlab::testing
