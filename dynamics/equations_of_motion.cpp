@@ -63,7 +63,10 @@ ContactState BodyOnPlane::contact_state(const StateVector& x) const {
 }
 
 void BodyOnPlane::operator()(double /*t*/, const StateVector& x, StateVector& dxdt) const {
-  const ContactState c = contact_state(x);
+  derivatives(x, contact_state(x), dxdt);
+}
+
+void BodyOnPlane::derivatives(const StateVector& x, const ContactState& c, StateVector& dxdt) const {
   const Eigen::Vector3d v = velocity(x);
   const Eigen::Vector3d w = angular_velocity(x);
   const Eigen::Vector3d Jw = inertia_.cwiseProduct(w);

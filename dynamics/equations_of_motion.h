@@ -1,5 +1,5 @@
 #pragma once
-// The equations of motion (2)-(5) of the paper with the dots restored (model-notes §3), in the
+// The equations of motion (2)-(5) of the paper with the dots restored (docs/model.md), in the
 // body frame C xi1 xi2 xi3 (origin at the centre of mass, principal axes, J = diag(A, A, C)):
 //
 //   Eq. (2)  m (v' + omega x v) = -m g gamma + N gamma + F
@@ -60,6 +60,9 @@ class BodyOnPlane {
 
   /// dx/dt at (t, x). Throws what the law throws (invalid input, e.g. a non-finite state).
   void operator()(double t, const StateVector& x, StateVector& dxdt) const;
+  /// dx/dt at x from its contact quantities `c` = contact_state(x) (for callers that inspect `c`
+  /// first, e.g. dynamics/pole_watch.h): operator() is contact_state followed by this.
+  void derivatives(const StateVector& x, const ContactState& c, StateVector& dxdt) const;
 
   /// The contact quantities at x (the same code path as operator()).
   [[nodiscard]] ContactState contact_state(const StateVector& x) const;

@@ -232,19 +232,24 @@ Scenario build(const toml::table& root, const std::string& source, const std::ve
   RunOptions& r = s.run;
   r.t_end = run.number("t_end");
   r.output_dt = run.number("output_dt", 1e-3);
+  r.max_samples = run.integer("max_samples", r.max_samples);
   r.integrator.method = run.string("integrator", r.integrator.method);
   r.integrator.abs_tol = run.number("abs_tol", r.integrator.abs_tol);
   r.integrator.rel_tol = run.number("rel_tol", r.integrator.rel_tol);
   r.integrator.initial_step = run.number("initial_step", r.integrator.initial_step);
   r.integrator.max_step = run.number("max_step", r.integrator.max_step);
   r.integrator.max_steps = run.integer("max_steps", r.integrator.max_steps);
-  r.rest.slip_speed = run.number("rest_slip_speed", r.rest.slip_speed);
-  r.rest.spin = run.number("rest_spin", r.rest.spin);
-  r.rest.kinetic_energy = run.number("rest_kinetic_energy", r.rest.kinetic_energy);
+  // Unset thresholds take defaults scaled to the body (dynamics/rest_event.h, dynamics/settling.h).
+  r.rest.slip_speed = run.optional_number("rest_slip_speed");
+  r.rest.spin = run.optional_number("rest_spin");
+  r.rest.kinetic_energy = run.optional_number("rest_kinetic_energy");
+  r.settle.time = run.optional_number("settle_time");
+  r.settle.normal_speed = run.optional_number("settle_normal_speed");
   r.stop_when_rolling = run.boolean("stop_when_rolling", r.stop_when_rolling);
-  run.check_no_unknown_keys({"t_end", "output_dt", "integrator", "abs_tol", "rel_tol", "initial_step", "max_step",
-                             "max_steps", "rest_slip_speed", "rest_spin", "rest_kinetic_energy",
-                             "stop_when_rolling"});
+  r.max_stagnant_steps = run.integer("max_stagnant_steps", r.max_stagnant_steps);
+  run.check_no_unknown_keys({"t_end", "output_dt", "max_samples", "integrator", "abs_tol", "rel_tol", "initial_step",
+                             "max_step", "max_steps", "rest_slip_speed", "rest_spin", "rest_kinetic_energy",
+                             "settle_time", "settle_normal_speed", "stop_when_rolling", "max_stagnant_steps"});
   r.validate();
 
   std::ostringstream resolved;

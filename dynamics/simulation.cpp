@@ -11,23 +11,14 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "dynamics/gsl_steppers.h"
+#include "dynamics/pole_watch.h"
+#include "dynamics/step_sampler.h"
+#include "dynamics/tolerance_scales.h"
 #include "friction/gsl_error_policy.h"
 
 namespace frictionlab::dynamics {
 namespace {
-
-struct Method {
-  const char* name;
-  const gsl_odeiv2_step_type* const* type;
-};
-
-const std::vector<Method>& methods() {
-  static const std::vector<Method> all = {
-      {"rk8pd", &gsl_odeiv2_step_rk8pd}, {"rkck", &gsl_odeiv2_step_rkck}, {"rkf45", &gsl_odeiv2_step_rkf45},
-      {"rk4", &gsl_odeiv2_step_rk4},     {"rk2", &gsl_odeiv2_step_rk2},   {"msadams", &gsl_odeiv2_step_msadams},
-  };
-  return all;
-}
 
 std::string num(double x) {
   std::ostringstream s;
@@ -36,16 +27,21 @@ std::string num(double x) {
   return s.str();
 }
 
-[[noreturn]] void fail(const char* key, double value, const char* rule) {
+[[noreturn]] void fail(const char* key, double value, const std::string& rule) {
   throw std::invalid_argument(std::string(key) + " = " + num(value) + " is invalid: " + rule);
 }
+
+// Why the last evaluation of the right-hand side failed.
+enum class RhsFailure { none, pole, nonfinite, law_error };
 
 // What the GSL callback needs; counts calls and records why an evaluation failed.
 struct Context {
   const BodyOnPlane* sys = nullptr;
+  const PoleWatch* poles = nullptr;  // null when the law has none
   long rhs_calls = 0;
-  bool nonfinite = false;  // the last failure was a non-finite value (retry with a smaller step)
-  std::string message;     // what went wrong, for the summary
+  RhsFailure last = RhsFailure::none;  // the outcome of the latest evaluation
+  int pole_output = -1;                // which denominator (PoleWatch::output_name) on a refusal
+  std::string message;                 // what went wrong, for the summary
 };
 
 // The friction at a state, in one line (for failure messages only).
@@ -75,28 +71,41 @@ std::string describe_nonfinite(const BodyOnPlane& sys, double t, const StateVect
   return m.str();
 }
 
+// The right-hand side as GSL calls it, for accepted steps and their trial stages alike. A state on
+// the far side of a pole of the law (dynamics/pole_watch.h) is refused like a non-finite one: GSL
+// then halves the step, so no accepted step and no stage of it crosses the pole.
 int rhs(double t, const double y[], double f[], void* params) {
   auto& ctx = *static_cast<Context*>(params);
   ++ctx.rhs_calls;
   const StateVector x = Eigen::Map<const StateVector>(y);
   if (!x.allFinite()) {
-    ctx.nonfinite = true;
+    ctx.last = RhsFailure::nonfinite;
     ctx.message = describe_nonfinite(*ctx.sys, t, x);
     return GSL_FAILURE;
   }
   StateVector d;
   try {
-    (*ctx.sys)(t, x, d);
+    const ContactState c = ctx.sys->contact_state(x);
+    if (ctx.poles) {
+      const int crossed = ctx.poles->crossing(c);
+      if (crossed >= 0) {
+        ctx.last = RhsFailure::pole;
+        ctx.pole_output = crossed;
+        return GSL_FAILURE;
+      }
+    }
+    ctx.sys->derivatives(x, c, d);
   } catch (const std::exception& e) {
-    ctx.nonfinite = false;
+    ctx.last = RhsFailure::law_error;
     ctx.message = std::string("at t = ") + num(t) + " s: " + e.what();
     return GSL_EBADFUNC;
   }
   if (!d.allFinite()) {
-    ctx.nonfinite = true;
+    ctx.last = RhsFailure::nonfinite;
     ctx.message = describe_nonfinite(*ctx.sys, t, x);
     return GSL_FAILURE;
   }
+  ctx.last = RhsFailure::none;
   Eigen::Map<StateVector> out(f);
   out = d;
   return GSL_SUCCESS;
@@ -106,18 +115,14 @@ struct DriverDeleter {
   void operator()(gsl_odeiv2_driver* d) const { gsl_odeiv2_driver_free(d); }
 };
 
+Threshold given(const char* key, double value, const char* unit) { return {key, value, unit, "given"}; }
+
 }  // namespace
 
-std::vector<std::string> integrator_methods() {
-  std::vector<std::string> out;
-  for (const auto& m : methods()) out.emplace_back(m.name);
-  return out;
-}
+std::vector<std::string> integrator_methods() { return gsl_stepper_names(); }
 
 void IntegratorOptions::validate() const {
-  bool known = false;
-  for (const auto& m : methods()) known = known || method == m.name;
-  if (!known) {
+  if (!gsl_stepper(method)) {
     std::string list;
     for (const auto& m : integrator_methods()) list += (list.empty() ? "" : ", ") + m;
     throw std::invalid_argument("run.integrator = '" + method + "' is not a known stepper; known: " + list);
@@ -135,8 +140,20 @@ void RunOptions::validate() const {
   if (!(std::isfinite(t_end) && t_end > 0.0)) fail("run.t_end", t_end, "it must be finite and > 0 s");
   if (!(std::isfinite(output_dt) && output_dt > 0.0))
     fail("run.output_dt", output_dt, "it must be finite and > 0 s");
+  if (max_samples <= 0) fail("run.max_samples", static_cast<double>(max_samples), "it must be > 0");
+  if (t_end / output_dt > static_cast<double>(max_samples))
+    fail("run.output_dt", output_dt,
+         "run.t_end/run.output_dt = " + num(t_end / output_dt) + " samples exceeds run.max_samples = " +
+             std::to_string(max_samples) + " (raise run.output_dt, or run.max_samples if you mean it)");
   integrator.validate();
+  if (integrator.max_step > 0.0 && integrator.max_step * static_cast<double>(integrator.max_steps) < t_end)
+    fail("run.max_step", integrator.max_step,
+         "run.max_steps = " + std::to_string(integrator.max_steps) + " steps of at most run.max_step reach only t = " +
+             num(integrator.max_step * static_cast<double>(integrator.max_steps)) + " s < run.t_end = " + num(t_end) +
+             " s");
+  if (max_stagnant_steps < 0) fail("run.max_stagnant_steps", static_cast<double>(max_stagnant_steps), "it must be >= 0 (0: never)");
   rest.validate();
+  settle.validate();
 }
 
 std::string_view to_string(Termination t) {
@@ -144,11 +161,15 @@ std::string_view to_string(Termination t) {
     case Termination::t_end: return "t_end";
     case Termination::rest: return "rest";
     case Termination::rolling: return "rolling";
+    case Termination::stagnation: return "stagnation";
+    case Termination::law_pole: return "law-pole";
     case Termination::non_finite: return "non-finite";
     case Termination::law_error: return "law-error";
     case Termination::integrator_failure: return "integrator-failure";
     case Termination::max_steps: return "max-steps";
     case Termination::interrupted: return "interrupted";
+    case Termination::output_error: return "output-error";
+    case Termination::output_limit: return "output-limit";
   }
   return "unknown";
 }
@@ -160,70 +181,112 @@ RunSummary simulate(const BodyOnPlane& sys, const StateVector& x0, const RunOpti
 
   const auto wall_start = std::chrono::steady_clock::now();
   const IntegratorOptions& io = options.integrator;
-  const gsl_odeiv2_step_type* type = nullptr;
-  for (const auto& m : methods())
-    if (io.method == m.name) type = *m.type;
-
-  Context ctx;
-  ctx.sys = &sys;
-  gsl_odeiv2_system system{&rhs, nullptr, StateLayout::kSize, &ctx};
-  std::unique_ptr<gsl_odeiv2_driver, DriverDeleter> driver(
-      gsl_odeiv2_driver_alloc_y_new(&system, type, io.initial_step, io.abs_tol, io.rel_tol));
-  if (!driver) throw std::runtime_error("GSL could not allocate the integrator");
 
   RunSummary s;
+  s.scales = body_scales(sys.body(), sys.plane());
+  s.rest = resolve_rest(options.rest, s.scales);
+  s.settle = resolve_settling(options.settle, s.scales);
+  const StateVector abs_scale = absolute_tolerance_scales(s.scales);
+  s.abs_tol = io.abs_tol * abs_scale;
+
+  PoleWatch poles(sys.law(), sys.plane().k);
+  Context ctx;
+  ctx.sys = &sys;
+  ctx.poles = poles.active() ? &poles : nullptr;
+  gsl_odeiv2_system system{&rhs, nullptr, StateLayout::kSize, &ctx};
+  std::unique_ptr<gsl_odeiv2_driver, DriverDeleter> driver(gsl_odeiv2_driver_alloc_scaled_new(
+      &system, gsl_stepper(io.method), io.initial_step, io.abs_tol, io.rel_tol, 1.0, 0.0, abs_scale.data()));
+  if (!driver) throw std::runtime_error("GSL could not allocate the integrator");
+  StepSampler sampler(io.method, sys);
+
   StateVector x = x0;
   double t = 0.0;
   double h = io.initial_step;
   const double max_step = io.max_step > 0.0 ? io.max_step : std::numeric_limits<double>::infinity();
 
-  const auto emit = [&](double time, const StateVector& state) {
-    if (!observer) return;
-    const ContactState c = sys.contact_state(state);
-    observer->sample(Sample{time, state, c, sys.energy(state, c), sys.kinetic_energy(state)});
-  };
   const auto stop = [&](Termination why, std::string message) {
     s.reason = why;
     s.message = std::move(message);
+    s.rule.clear();
+    s.thresholds.clear();
+  };
+  // Reports a sample; false (and the run stops) if the observer's output failed.
+  double last_sample_t = -1.0;
+  const auto emit = [&](double time, const StateVector& state) {
+    if (!observer) return true;
+    try {
+      const ContactState c = sys.contact_state(state);
+      observer->sample(Sample{time, state, c, sys.energy(state, c), sys.kinetic_energy(state)});
+    } catch (const OutputFailure& e) {
+      stop(Termination::output_error, std::string("the output failed at t = ") + num(time) + " s: " + e.what());
+      return false;
+    } catch (const OutputLimitReached& e) {
+      stop(Termination::output_limit, std::string("the output reached its limit at t = ") + num(time) + " s: " + e.what());
+      return false;
+    }
+    ++s.samples;
+    last_sample_t = time;
+    return true;
   };
 
-  ContactState c0 = sys.contact_state(x);  // throws here (not mid-run) if the law rejects x0
+  const ContactState c0 = sys.contact_state(x);  // throws here (not mid-run) if the law rejects x0
   s.initial_energy = sys.energy(x, c0);
   s.min_normal_force = c0.N;
   s.max_gamma_drift = std::abs(vertical(x).norm() - 1.0);
   bool in_contact = c0.in_contact;
-  emit(t, x);
-  long next_sample = 1;
-  bool sampled_last = true;
-  bool done = false;
+  poles.set_reference(c0);
+  ContactSettling settling(s.settle);
+  settling.update(t, c0.in_contact, c0.u.dot(c0.gamma));
 
-  while (!done) {
+  // The step being sampled: its start is the previous step's end.
+  AcceptedStep step;
+  step.t1 = t;
+  step.x1 = x;
+  step.f1.setZero();
+  try {
+    sys(t, x, step.f1);
+  } catch (const std::exception&) {
+    // The first integrator step reports it (law-error).
+  }
+
+  bool output_ok = emit(t, x);
+  long next_sample = 1;
+  long stagnant_unsettled = 0;  // accepted steps in a row in the stagnation region, not settled
+
+  while (output_ok) {
     if (t >= options.t_end) {
       stop(Termination::t_end, "");
+      s.rule = "t = run.t_end";
+      s.thresholds = {given("run.t_end", options.t_end, "s")};
       break;
     }
-    const double t_sample = std::min(static_cast<double>(next_sample) * options.output_dt, options.t_end);
-    const StateVector x_good = x;
-    const double t_good = t;
-    const double h_before = h = std::min(h, max_step);
-    ctx.nonfinite = false;
-    const int status = gsl_odeiv2_evolve_apply(driver->e, driver->c, driver->s, &system, &t, t_sample, &h, x.data());
+    step.t0 = step.t1;
+    step.x0 = step.x1;
+    step.f0 = step.f1;
+    h = std::min(h, max_step);
+    ctx.last = RhsFailure::none;
+    const int status =
+        gsl_odeiv2_evolve_apply(driver->e, driver->c, driver->s, &system, &t, options.t_end, &h, x.data());
     if (status == GSL_SUCCESS) {
       ++s.steps;
       if (!x.allFinite()) {
-        x = x_good;
-        t = t_good;
-        stop(Termination::non_finite, "the state became non-finite after the step from t = " + num(t_good) + " s");
+        x = step.x0;
+        t = step.t0;
+        stop(Termination::non_finite, "the state became non-finite after the step from t = " + num(t) + " s");
         break;
       }
-      // A step shortened to land on a sample time should not shrink the next one.
-      if (t == t_sample && h < h_before) h = h_before;
-      sampled_last = false;
-      if (t == t_sample) {
-        emit(t, x);
-        sampled_last = true;
+      step.t1 = t;
+      step.x1 = x;
+      step.f1 = Eigen::Map<const StateVector>(driver->e->dydt_out);
+
+      // Samples on the output grid inside (t0, t1], from the step (never by cutting it).
+      for (;;) {
+        const double ts = static_cast<double>(next_sample) * options.output_dt;
+        if (ts > t) break;
+        if (!(output_ok = emit(ts, sampler.at(step, ts)))) break;
         ++next_sample;
       }
+      if (!output_ok) break;
       if (observer) observer->step(t);
 
       // Events between steps.
@@ -232,46 +295,91 @@ RunSummary simulate(const BodyOnPlane& sys, const StateVector& x0, const RunOpti
       in_contact = c.in_contact;
       s.min_normal_force = std::min(s.min_normal_force, c.N);
       s.max_gamma_drift = std::max(s.max_gamma_drift, std::abs(vertical(x).norm() - 1.0));
+      poles.set_reference(c);
+      settling.update(t, c.in_contact, c.u.dot(c.gamma));
+      const bool settled = settling.settled(t);
       const double kinetic = sys.kinetic_energy(x);
-      if (options.rest.at_rest(c.in_contact, c.U, c.Omega, kinetic)) {
-        stop(Termination::rest, "slip speed, spin and kinetic energy fell below the rest thresholds");
-        done = true;
-      } else if (options.stop_when_rolling && options.rest.contact_stagnant(c.in_contact, c.U, c.Omega)) {
-        stop(Termination::rolling, "the contact neither slips (U = " + num(c.U) + " m/s) nor spins (Omega = " +
+      const auto stagnation_rule = [&](const char* energy_clause) {
+        s.rule = std::string("settled contact (in contact with |eps'| < run.settle_normal_speed at every step of the "
+                             "last run.settle_time), U < run.rest_slip_speed, |Omega| < run.rest_spin, kinetic "
+                             "energy ") +
+                 energy_clause;
+        s.thresholds = {s.settle.time, s.settle.normal_speed, s.rest.slip_speed, s.rest.spin, s.rest.kinetic_energy};
+      };
+      if (settled && s.rest.at_rest(c.in_contact, c.U, c.Omega, kinetic)) {
+        stop(Termination::rest, "settled since t = " + num(settling.since()) + " s; U = " + num(c.U) +
+                                    " m/s, |Omega| = " + num(std::abs(c.Omega)) + " 1/s and kinetic energy " +
+                                    num(kinetic) + " J are below the rest thresholds");
+        stagnation_rule("< run.rest_kinetic_energy");
+        break;
+      }
+      if (settled && options.stop_when_rolling && s.rest.contact_stagnant(c.in_contact, c.U, c.Omega)) {
+        stop(Termination::rolling, "the contact, settled since t = " + num(settling.since()) +
+                                       " s, neither slips (U = " + num(c.U) + " m/s) nor spins (Omega = " +
                                        num(c.Omega) + " 1/s) but the kinetic energy " + num(kinetic) +
-                                       " J is above run.rest_kinetic_energy: the body rolls without slip");
-        done = true;
-      } else if (s.steps >= io.max_steps) {
+                                       " J is above run.rest_kinetic_energy = " + num(s.rest.kinetic_energy.value) +
+                                       " J: the body rolls without slip");
+        stagnation_rule(">= run.rest_kinetic_energy");
+        break;
+      }
+      stagnant_unsettled =
+          !settled && s.rest.contact_stagnant(c.in_contact, c.U, c.Omega) ? stagnant_unsettled + 1 : 0;
+      if (options.max_stagnant_steps > 0 && stagnant_unsettled >= options.max_stagnant_steps) {
+        stop(Termination::stagnation,
+             "the contact has stayed in the stagnation region (U = " + num(c.U) + " m/s, |Omega| = " +
+                 num(std::abs(c.Omega)) + " 1/s) for " + std::to_string(stagnant_unsettled) +
+                 " steps while its normal motion has not settled (unsettled at t = " + num(settling.since()) +
+                 " s; now |eps'| = " + num(std::abs(c.u.dot(c.gamma))) +
+                 " m/s): a bounce reached the laws' singular set U = Omega = 0, where the integrator only "
+                 "chatters and the model has no sticking branch");
+        s.rule = "in contact, not settled, U < run.rest_slip_speed and |Omega| < run.rest_spin for "
+                 "run.max_stagnant_steps accepted steps in a row";
+        s.thresholds = {given("run.max_stagnant_steps", static_cast<double>(options.max_stagnant_steps), "steps"),
+                        s.settle.time, s.settle.normal_speed, s.rest.slip_speed, s.rest.spin};
+        break;
+      }
+      if (s.steps >= io.max_steps) {
         stop(Termination::max_steps, "run.max_steps = " + std::to_string(io.max_steps) + " steps reached");
-        done = true;
-      } else if (options.cancel && options.cancel->load(std::memory_order_relaxed)) {
+        s.rule = "accepted steps = run.max_steps";
+        s.thresholds = {given("run.max_steps", static_cast<double>(io.max_steps), "steps")};
+        break;
+      }
+      if (options.cancel && options.cancel->load(std::memory_order_relaxed)) {
         stop(Termination::interrupted, "interrupted");
-        done = true;
+        break;
       }
-    } else if (status == GSL_EBADFUNC) {
-      x = x_good;
-      t = t_good;
-      stop(Termination::law_error, ctx.message);
-      break;
-    } else {
-      // GSL already retried with ever smaller steps down to machine precision.
-      x = x_good;
-      t = t_good;
-      if (ctx.nonfinite) {
-        stop(Termination::non_finite, ctx.message + " (no step size down to machine precision avoids it)");
-      } else {
-        stop(Termination::integrator_failure,
-             std::string("GSL: ") + gsl_strerror(status) + " (no step above machine precision meets the tolerance) at t = " +
-                 num(t) + " s; at that state " + describe_friction(sys, x));
-      }
-      break;
+      continue;
     }
+
+    // Failure: GSL already retried with ever smaller steps down to machine precision.
+    x = step.x0;
+    t = step.t0;
+    if (status == GSL_EBADFUNC) {
+      stop(Termination::law_error, ctx.message);
+    } else if (ctx.last == RhsFailure::pole) {
+      std::ostringstream m;
+      m.precision(10);
+      m << "the denominator of " << PoleWatch::output_name(ctx.pole_output) << " of friction law '" << sys.law().name()
+        << "' passes through 0 within " << std::abs(h) << " s after t = " << t
+        << " s: the motion cannot be continued past this pole; at the last good state " << describe_friction(sys, x);
+      stop(Termination::law_pole, m.str());
+      s.rule = "a denominator of the friction law's outputs passes through 0 (friction/law.h pole_denominators)";
+    } else if (ctx.last == RhsFailure::nonfinite) {
+      stop(Termination::non_finite, ctx.message + " (no step size down to machine precision avoids it)");
+    } else {
+      stop(Termination::integrator_failure,
+           std::string("GSL: ") + gsl_strerror(status) + " (no step above machine precision meets the tolerance) at t = " +
+               num(t) + " s; at that state " + describe_friction(sys, x));
+    }
+    break;
   }
 
-  if (!sampled_last) emit(t, x);
+  if (output_ok && last_sample_t != t) (void)emit(t, x);
   s.t_final = t;
   s.x_final = x;
   s.rhs_calls = ctx.rhs_calls;
+  s.sample_rhs_calls = sampler.rhs_calls();
+  s.hermite_samples = sampler.hermite_fallbacks();
   s.rejected_steps = static_cast<long>(driver->e->failed_steps);
   s.final_energy = sys.energy(x);
   s.wall_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();

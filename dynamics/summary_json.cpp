@@ -90,12 +90,23 @@ void write_summary_json(std::ostream& out, const Scenario& scenario, const Body&
   j.open("termination");
   j.key("reason", json_string(to_string(s.reason)));
   j.key("message", json_string(s.message));
+  j.key("rule", json_string(s.rule));
+  std::string th = "[";
+  for (std::size_t i = 0; i < s.thresholds.size(); ++i) {
+    const Threshold& t = s.thresholds[i];
+    th += (i ? ", " : "") + std::string("{\"key\": ") + json_string(t.key) + ", \"value\": " + number(t.value) +
+          ", \"unit\": " + json_string(t.unit) + ", \"source\": " + json_string(t.source) + "}";
+  }
+  j.key("thresholds", th + "]");
   j.close();
   j.key("final_time", number(s.t_final));
   j.key("t_end", number(scenario.run.t_end));
   j.key("steps", std::to_string(s.steps));
   j.key("rejected_steps", std::to_string(s.rejected_steps));
   j.key("rhs_calls", std::to_string(s.rhs_calls));
+  j.key("samples", std::to_string(s.samples));
+  j.key("sample_rhs_calls", std::to_string(s.sample_rhs_calls));
+  j.key("hermite_samples", std::to_string(s.hermite_samples));
   j.key("wall_time_s", number(s.wall_time));
   j.key("liftoffs", std::to_string(s.liftoffs));
   j.key("landings", std::to_string(s.landings));
@@ -135,11 +146,28 @@ void write_summary_json(std::ostream& out, const Scenario& scenario, const Body&
   j.key("abs_tol", number(scenario.run.integrator.abs_tol));
   j.key("rel_tol", number(scenario.run.integrator.rel_tol));
   j.key("output_dt", number(scenario.run.output_dt));
+  j.open("abs_tol_per_component");
+  j.key("v", number(velocity(s.abs_tol)[0]));
+  j.key("omega", number(angular_velocity(s.abs_tol)[0]));
+  j.key("gamma", number(vertical(s.abs_tol)[0]));
+  j.key("eps", number(height(s.abs_tol)));
+  j.key("work", number(slide_work(s.abs_tol)));
+  j.close();
+  j.close();
+  j.open("scales");
+  j.key("size_R", number(s.scales.size));
+  j.key("speed_sqrt_gR", number(s.scales.speed));
+  j.key("rate_sqrt_g_over_R", number(s.scales.rate));
+  j.key("energy_mgR", number(s.scales.energy));
+  j.key("static_compression", number(s.scales.compression));
+  j.key("liftoff_speed", number(s.scales.liftoff_speed));
   j.close();
   j.open("rest_thresholds");
-  j.key("slip_speed", number(scenario.run.rest.slip_speed));
-  j.key("spin", number(scenario.run.rest.spin));
-  j.key("kinetic_energy", number(scenario.run.rest.kinetic_energy));
+  j.key("slip_speed", number(s.rest.slip_speed.value));
+  j.key("spin", number(s.rest.spin.value));
+  j.key("kinetic_energy", number(s.rest.kinetic_energy.value));
+  j.key("settle_time", number(s.settle.time.value));
+  j.key("settle_normal_speed", number(s.settle.normal_speed.value));
   j.close();
   j.finish();
 }

@@ -38,7 +38,7 @@ TEST(DynContactGeometry, SphereContactPointIsMinusRGamma) {
   const ContactGeometry geo(Profile::sphere(R), 0.0);
   for (const auto& g : orientations()) {
     const ContactPoint c = geo.contact_point(g);
-    EXPECT_VEC_NEAR(c.r, Eigen::Vector3d(-R * g), kGeomRelTol * R);
+    EXPECT_EIGEN_NEAR(c.r, Eigen::Vector3d(-R * g), kGeomRelTol * R);
     EXPECT_NEAR(c.R_meridian, R, kGeomRelTol * R);
     EXPECT_NEAR(c.R_parallel, R, kGeomRelTol * R);
   }
@@ -71,7 +71,7 @@ TEST(DynContactGeometry, SpheroidMatchesClosedForm) {
       const Eigen::Vector3d r = -Eigen::Vector3d(a * a * g.x(), a * a * g.y(), c * c * g.z()) / D;
       const ContactPoint p = geo.contact_point(g);
       const double L = std::max(a, c);
-      EXPECT_VEC_NEAR(p.r, r, kGeomRelTol * L) << "a = " << a << ", c = " << c;
+      EXPECT_EIGEN_NEAR(p.r, r, kGeomRelTol * L) << "a = " << a << ", c = " << c;
       EXPECT_NEAR(p.R_parallel, a * a / D, kGeomRelTol * a * a / D);
       EXPECT_NEAR(p.R_meridian, a * a * c * c / (D * D * D), kGeomRelTol * a * a * c * c / (D * D * D));
     }
@@ -91,7 +91,7 @@ TEST(DynContactGeometry, EggContactPointHasOutwardNormalMinusGamma) {
     EXPECT_NEAR(c.r.z() + com, c.z, 1e-16);
     // Outward normal (2x, 2y, -P') / |.| equals -gamma.
     const Eigen::Vector3d n = Eigen::Vector3d(2 * x, 2 * y, -j.d1).normalized();
-    EXPECT_VEC_NEAR(n, Eigen::Vector3d(-g), 1e-12);
+    EXPECT_EIGEN_NEAR(n, Eigen::Vector3d(-g), 1e-12);
   }
 }
 
@@ -145,7 +145,7 @@ TEST(DynContactGeometry, SpheroidPatchAxesFollowThePrincipalDirections) {
   ASSERT_GT(cp.R_meridian, cp.R_parallel);
   const PatchShape pt = ContactGeometry::patch(cp, gt, depth);
   const Eigen::Vector3d meridian = (Eigen::Vector3d::UnitZ() - gt.z() * gt).normalized();
-  EXPECT_VEC_NEAR(pt.major, meridian, 1e-15);
+  EXPECT_EIGEN_NEAR(pt.major, meridian, 1e-15);
   EXPECT_NEAR(pt.a, std::sqrt(2 * depth * cp.R_meridian), kGeomRelTol);
 }
 

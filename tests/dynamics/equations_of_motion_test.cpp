@@ -98,12 +98,12 @@ TEST(DynEquationsOfMotion, FrictionOpposesTheSlipAndActsAtTheContactPoint) {
     EXPECT_NEAR(F.dot(slip), -c.friction.F1 * c.U, 1e-12 * (1.0 + c.friction.F1 * c.U));
     // Eq. (7) in the slip frame: F = -F1 e1 - F2 e2 with e1 along the slip and e2 = gamma x e1.
     ASSERT_GT(c.U, 0.0);
-    EXPECT_VEC_NEAR(c.e1, Eigen::Vector3d(slip / c.U), 1e-14);
+    EXPECT_EIGEN_NEAR(c.e1, Eigen::Vector3d(slip / c.U), 1e-14);
     EXPECT_NEAR(F.dot(c.e1), -c.friction.F1, 1e-12 * c.N);
     EXPECT_NEAR(F.dot(c.gamma.cross(c.e1)), -c.friction.F2, 1e-12 * c.N);
     EXPECT_GT(std::abs(c.friction.F2), 1e-6 * c.N);  // the test law's F2 is exercised
     EXPECT_NEAR(F.dot(c.gamma), 0.0, 1e-12 * c.N);
-    EXPECT_VEC_NEAR(c.torque, Eigen::Vector3d(c.point.r.cross(c.force) - c.friction.M * c.gamma), 1e-12);
+    EXPECT_EIGEN_NEAR(c.torque, Eigen::Vector3d(c.point.r.cross(c.force) - c.friction.M * c.gamma), 1e-12);
     EXPECT_GE(c.psi, 0.0);
     EXPECT_LT(c.psi, std::numbers::pi);
     EXPECT_GE(c.a, c.b);
@@ -124,7 +124,7 @@ TEST(DynEquationsOfMotion, NoFrictionOutOfContact) {
   sys(0.0, x, d);
   // Free flight: v' = -omega x v - g gamma.
   const Eigen::Vector3d g = vertical(x).normalized();
-  EXPECT_VEC_NEAR(Eigen::Vector3d(velocity(d)),
+  EXPECT_EIGEN_NEAR(Eigen::Vector3d(velocity(d)),
                   Eigen::Vector3d(-Eigen::Vector3d(angular_velocity(x)).cross(Eigen::Vector3d(velocity(x))) - 9.81 * g),
                   1e-14);
 }
@@ -171,8 +171,8 @@ TEST(DynEquationsOfMotion, GammaIsRenormalisedWhereItIsRead) {
   StateVector y = x;
   vertical(y) *= 1.0 + 1e-9;
   const ContactState a = sys.contact_state(x), b = sys.contact_state(y);
-  EXPECT_VEC_NEAR(a.gamma, b.gamma, 1e-15);
-  EXPECT_VEC_NEAR(a.force, b.force, 1e-12 * a.force.norm());
+  EXPECT_EIGEN_NEAR(a.gamma, b.gamma, 1e-15);
+  EXPECT_EIGEN_NEAR(a.force, b.force, 1e-12 * a.force.norm());
   // Eq. (4) conserves |gamma|.
   StateVector d;
   sys(0.0, x, d);

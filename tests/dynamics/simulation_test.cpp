@@ -2,10 +2,12 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <numbers>
 #include <random>
+#include <string>
 #include <vector>
 
 #include "friction/registry.h"
@@ -15,6 +17,7 @@ namespace frictionlab::dynamics {
 namespace {
 
 using testing::egg_body;
+using testing::paper_case_a;
 using testing::sphere_body;
 
 constexpr double pi = std::numbers::pi;
@@ -105,7 +108,7 @@ RunSummary slide(const friction::FrictionLaw& law, const SlidingSphere& p, doubl
 TEST(DynSimulation, SlidingSphereStartsRollingAtFiveSeventhsOfItsSpeed) {
   const SlidingSphere p;
   const double t_roll = 2.0 * p.v0 / (7.0 * p.k * p.g);
-  // Any law whose pure-slip force is kN (model-notes §1; the printed Pade law too: Omega = 0).
+  // Any law whose pure-slip force is kN (docs/model.md; the printed Pade law too: Omega = 0).
   for (const char* name : {"exact", "pade-printed"}) {
     const auto law = friction::make_law(name);
     const double eps_static = PlaneContact{p.k, p.lambda, p.g}.static_height(p.m * p.g);
@@ -166,7 +169,7 @@ TEST(DynSimulation, SpinningSphereDecaysLinearlyAndStopsAtRest) {
   }
   const double t_stop = C * w0 / M0;
   EXPECT_LE(s.t_final, t_stop);
-  EXPECT_GE(s.t_final, t_stop - o.rest.spin * C / M0 - 1e-9);
+  EXPECT_GE(s.t_final, t_stop - s.rest.spin.value * C / M0 - 1e-9);
   // No chatter. The step is bounded by the stability of the explicit stepper on the Hertz
   // vertical mode, omega_n = sqrt(1.5 lambda sqrt|eps_s| / m), |h omega_n| <~ 4: about
   // t_stop omega_n / 4 steps. Chatter at Omega = 0 would add orders of magnitude more.
@@ -177,7 +180,7 @@ TEST(DynSimulation, SpinningSphereDecaysLinearlyAndStopsAtRest) {
 }
 
 // ---------------------------------------------------------------------------------------------
-// Energy never rises under the exact law (model-notes §3): E(t) is non-increasing along random
+// Energy never rises under the exact law (docs/model.md): E(t) is non-increasing along random
 // short starts of the egg, and E + W_slide + W_spin = E(0) (the work states integrate F1 U and
 // M Omega). Both hold to the integrator's accuracy: with tolerances 1e-12 the energy error of a
 // run stays below 1e-9 of the energy scale (measured ~1e-11).
@@ -219,11 +222,10 @@ TEST(DynSimulation, DroppedSphereBouncesAndCountsLiftoffsAndLandings) {
   const double R = 0.05, m = 1.0, g = 9.81, h = 1e-3;
   const BodyOnPlane sys(sphere_body(R, m), PlaneContact{0.2, 1e7, g}, law);
   const StateVector x0 = make_state(Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitZ(), h);
-  RunOptions o = tight(0.1, 1e-3);
-  // At the deepest point of each bounce the sphere is momentarily still: without this the rest
-  // event would (correctly, by its definition) stop the run there.
-  o.rest = RestThresholds{0.0, 0.0, 0.0};
-  const RunSummary s = simulate(sys, x0, o);
+  // With the default thresholds: the sphere neither slips nor spins, and at the deepest point of
+  // each bounce it is momentarily still, but rest and rolling wait for a settled contact and the
+  // friction is 0, so nothing chatters: it bounces on to t_end.
+  const RunSummary s = simulate(sys, x0, tight(0.1, 1e-3));
   ASSERT_EQ(s.reason, Termination::t_end) << s.message;
   // Flight time between impacts 2 sqrt(2h/g) = 28.6 ms (+ ~0.5 ms in contact): 3 or 4 landings.
   EXPECT_GE(s.landings, 3);
@@ -294,6 +296,340 @@ TEST(DynSimulation, EveryStepperRunsAndUnknownOnesAreRejected) {
   } catch (const std::invalid_argument& e) {
     EXPECT_NE(std::string(e.what()).find("run.integrator = 'euler'"), std::string::npos) << e.what();
   }
+}
+
+
+// =============================================================================================
+// Events that mean what they say. Reasons are compared as strings (to_string) so that these
+// checks read the same as summary.json.
+
+std::string reason(const RunSummary& s) { return std::string(to_string(s.reason)); }
+
+// A sphere released 1 cm above the plane while sliding at 2 m/s (data/scenarios/sphere-sliding.toml
+// with initial.eps = 0.01). The Hertz spring is lossless and the sphere's vertical motion is
+// decoupled from the friction, so it bounces back to 1 cm for ever; during an impact the slip
+// reaches 0 while the centre still moves into the plane at ~0.43 m/s. That is no rolling.
+TEST(DynSimulation, ASphereThatStopsSlippingDuringABounceDoesNotEndRolling) {
+  const SlidingSphere p;
+  const auto law = friction::make_law("exact");
+  const BodyOnPlane sys(sphere_body(p.R, p.m), PlaneContact{p.k, p.lambda, p.g}, *law);
+  const StateVector x0 = make_state({p.v0, 0.0, 0.0}, Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitZ(), 0.01);
+  RunOptions o;
+  o.t_end = 1.0;
+  o.output_dt = 1e-3;
+  o.rest.slip_speed = kRollSlipSpeed;  // as the scenario file
+  const RunSummary s = simulate(sys, x0, o);
+  const ContactState c = sys.contact_state(s.x_final);
+  // The linearised Hertz vibration about the static compression opens the contact above this
+  // normal speed (dynamics/body_scales.h): sqrt(1.5 g |eps_s|) = 0.038 m/s here.
+  const double eps_s = PlaneContact{p.k, p.lambda, p.g}.static_height(p.m * p.g);
+  const double v_lift = std::sqrt(1.5 * p.g * std::abs(eps_s));
+  EXPECT_NE(reason(s), "rolling") << s.message;
+  EXPECT_NE(reason(s), "rest") << s.message;
+  // It stops where the integrator can only chatter (the law's singular set during an impact),
+  // and says so.
+  EXPECT_EQ(reason(s), "stagnation") << s.message;
+  EXPECT_GT(std::abs(c.u.dot(c.gamma)), 5.0 * v_lift) << "the stop is mid-impact";
+}
+
+TEST(DynSimulation, AVerticalDropBouncesOnWithTheDefaultThresholds) {
+  // Neither slip nor spin: the contact sits in the stagnation region during every impact, where
+  // the exact law gives no friction (nothing chatters), and the sphere is momentarily still at the
+  // bottom of each bounce. None of that is rest or rolling: it bounces to t_end.
+  const auto law = friction::make_law("exact");
+  const BodyOnPlane sys(sphere_body(0.05, 1.0), PlaneContact{0.2, 1e7, 9.81}, *law);
+  const StateVector x0 = make_state(Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitZ(), 1e-3);
+  const RunSummary s = simulate(sys, x0, tight(0.1, 1e-3));
+  EXPECT_EQ(reason(s), "t_end") << s.message;
+  EXPECT_GE(s.landings, 3);
+}
+
+// A small tippe top: a sphere of R = 2 cm and m = 15 g with its centre of mass 4 mm below the
+// centre, standing nearly upright on its lower pole and spun at 100 1/s. Its friction turns it
+// over towards its upper pole; by t ~ 15 s its contact neither slips nor spins while it still
+// rolls (its centre moves at ~0.16 m/s). With the absolute default of 1e-3 J the kinetic-energy
+// threshold was 1/3 of its m g R and the run stopped "rest" there.
+TEST(DynSimulation, ASmallTippeTopIsNotAtRestWhileItRolls) {
+  BodySpec spec;
+  spec.preset = "sphere";
+  spec.radius = 0.02;
+  spec.mass = 0.015;
+  spec.com = -0.004;
+  const auto law = friction::make_law("exact");
+  const PlaneContact plane{0.3, 1e7, 9.81};
+  const BodyOnPlane sys(make_body(spec), plane, *law);
+  const StateVector x0 = make_state(Eigen::Vector3d::Zero(), {0.0, 0.0, 100.0},
+                                    Eigen::Vector3d(std::sin(0.1), 0.0, std::cos(0.1)),
+                                    plane.static_height(spec.mass * plane.g));
+  RunOptions o;
+  o.t_end = 20.0;
+  o.output_dt = 0.1;
+  const RunSummary s = simulate(sys, x0, o);
+  // m g R with R = 0.024 m, the distance from the centre of mass to the far pole.
+  const double mgR = spec.mass * plane.g * (0.02 + 0.004);
+  const double kinetic = sys.kinetic_energy(s.x_final);
+  const double speed = velocity(s.x_final).norm();
+  if (reason(s) == "rest") {
+    EXPECT_LT(kinetic, kRestKineticEnergyFactor * mgR) << "at rest with " << kinetic / mgR << " m g R";
+    EXPECT_LT(speed, std::sqrt(2.0 * kRestKineticEnergyFactor * mgR / spec.mass)) << "at rest moving at " << speed;
+  }
+  EXPECT_EQ(reason(s), "rolling") << s.message;
+  EXPECT_GT(kinetic, 0.01 * mgR);  // it does roll
+}
+
+// ---------------------------------------------------------------------------------------------
+// The output interval never changes the steps: samples are taken inside accepted steps.
+TEST(DynSimulation, TwoOutputIntervalsGiveTheSameStepsAndTheSameFinalStateBitForBit) {
+  const auto law = friction::make_law("exact");
+  const BodyOnPlane sys(egg_body("egg-printed"), PlaneContact{0.1, 1e7, 9.81}, *law);
+  RunOptions o;
+  o.t_end = 0.05;
+  std::vector<RunSummary> runs;
+  std::vector<std::size_t> samples;
+  for (const double dt : {1e-3, 7e-4, 0.05}) {
+    o.output_dt = dt;
+    Recorder rec;
+    runs.push_back(simulate(sys, paper_case_a(), o, &rec));
+    samples.push_back(rec.rows.size());
+    ASSERT_EQ(reason(runs.back()), "t_end") << runs.back().message;
+    EXPECT_EQ(runs.back().t_final, o.t_end) << "t_end is hit exactly";
+    EXPECT_EQ(rec.rows.back().t, o.t_end);
+  }
+  for (std::size_t i = 1; i < runs.size(); ++i) {
+    EXPECT_EQ(runs[i].steps, runs[0].steps);
+    EXPECT_EQ(runs[i].rejected_steps, runs[0].rejected_steps);
+    EXPECT_EQ(runs[i].rhs_calls, runs[0].rhs_calls);
+    for (int j = 0; j < StateLayout::kSize; ++j) EXPECT_EQ(runs[i].x_final[j], runs[0].x_final[j]) << "component " << j;
+  }
+  EXPECT_EQ(samples[0], 51u);  // t = 0, 1e-3, ..., 0.05
+  EXPECT_EQ(samples[2], 2u);   // t = 0 and t_end
+}
+
+// Samples inside steps are as accurate as the step ends: a torque-free symmetric top (the egg in
+// flight, g = 0) has omega3 constant and (omega1 + i omega2) turning at the rate
+// lambda = (C - A) omega3 / A (Euler's equations for A = B); every sample must follow it.
+TEST(DynSimulation, SamplesInsideStepsFollowTheFreeSymmetricTop) {
+  const testing::ForbiddenLaw law;
+  const Body body = egg_body("egg-homogeneous");
+  const BodyOnPlane sys(body, PlaneContact{0.1, 1e7, 0.0}, law);
+  const Eigen::Vector3d w0(12.0, -7.0, 30.0);
+  const StateVector x0 = make_state({0.1, 0.0, 0.0}, w0, Eigen::Vector3d::UnitZ(), 1.0);
+  Recorder rec;
+  const RunSummary s = simulate(sys, x0, tight(0.5, 2e-3), &rec);
+  ASSERT_EQ(reason(s), "t_end") << s.message;
+  ASSERT_LT(2 * s.steps, static_cast<long>(rec.rows.size())) << "most samples must lie inside steps";
+  const double lambda = (body.C - body.A) * w0.z() / body.A;
+  for (const auto& r : rec.rows) {
+    const double c = std::cos(lambda * r.t), sn = std::sin(lambda * r.t);
+    const Eigen::Vector3d w(w0.x() * c - w0.y() * sn, w0.x() * sn + w0.y() * c, w0.z());
+    // Tolerance 1e-12 over ~100 steps: 1e-9 of |omega| leaves a wide margin.
+    EXPECT_EIGEN_NEAR(Eigen::Vector3d(angular_velocity(r.x)), w, 1e-9 * w0.norm()) << "t = " << r.t;
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Poles of a law (dynamics/pole_watch.h).
+
+// A sphere sliding at v0 and spinning at w0 about the vertical under decoupled Coulomb forces:
+// U = v0 - 3.5 k g t and Omega = w0 - M0 t / C, M0 = (3 pi/16) k m g a on the static patch. The
+// declared denominator s - s_pole, s = U/(a Omega), vanishes at
+//   t* = (v0 - s_pole a w0) / (3.5 k g - s_pole a M0 / C).
+struct SpinningSlider {
+  double R = 0.05, m = 1.0, k = 0.2, lambda = 1e7, g = 9.81, v0 = 2.0, w0 = 20.0, s_pole = 10.0;
+  [[nodiscard]] double a() const {
+    return std::sqrt(2.0 * std::abs(PlaneContact{k, lambda, g}.static_height(m * g)) * R);
+  }
+  [[nodiscard]] double t_pole() const {
+    const double M0 = 3.0 * std::numbers::pi / 16.0 * k * m * g * a();
+    const double C = 0.4 * m * R * R;
+    return (v0 - s_pole * a() * w0) / (3.5 * k * g - s_pole * a() * M0 / C);
+  }
+  [[nodiscard]] RunSummary run(const friction::FrictionLaw& law, double tol, double output_dt) const {
+    const PlaneContact plane{k, lambda, g};
+    const BodyOnPlane sys(sphere_body(R, m), plane, law);
+    const StateVector x0 =
+        make_state({v0, 0.0, 0.0}, {0.0, 0.0, w0}, Eigen::Vector3d::UnitZ(), plane.static_height(m * g));
+    RunOptions o = tight(0.25, output_dt);  // rolling would start at 0.291 s
+    o.integrator.abs_tol = o.integrator.rel_tol = tol;
+    return simulate(sys, x0, o);
+  }
+};
+
+// The located crossing: the run closes in on t* until no step above rounding avoids it; what is
+// left is the integrator's error in U - s_pole a Omega (~1e-12 m/s at these tolerances) divided
+// by its rate (~7 m/s^2).
+constexpr double kPoleTimeTol = 1e-9;  // s
+
+TEST(DynSimulation, ARunStopsAtTheLocatedPoleOfItsLawEvenWhereTheForcesStayFinite) {
+  const SpinningSlider p;
+  ASSERT_GT(p.t_pole(), 0.1);
+  ASSERT_LT(p.t_pole(), 0.25);
+  const testing::DeclaredPoleTestLaw law(p.s_pole, /*through_zero=*/true);
+  for (const double tol : {1e-9, 1e-12}) {
+    for (const double dt : {1e-3, 0.1}) {
+      const RunSummary s = p.run(law, tol, dt);
+      EXPECT_EQ(reason(s), "law-pole") << s.message;
+      EXPECT_NEAR(s.t_final, p.t_pole(), kPoleTimeTol) << "tol " << tol << ", output_dt " << dt;
+      EXPECT_LE(s.t_final, p.t_pole() + kPoleTimeTol) << "the last good state is on the near side";
+      EXPECT_TRUE(s.x_final.allFinite());
+    }
+  }
+}
+
+TEST(DynSimulation, ADenominatorThatChangesSignThroughInfinityIsNoPole) {
+  const SpinningSlider p;
+  const testing::DeclaredPoleTestLaw law(p.s_pole, /*through_zero=*/false);
+  const RunSummary s = p.run(law, 1e-10, 1e-2);
+  EXPECT_EQ(reason(s), "t_end") << s.message;
+}
+
+// The printed Padé law (eq. (8)) on the paper's case a: its F2 denominator vanishes early in both
+// egg readings. The stop must not depend on the tolerance (from the scenarios' 1e-9 down) or on
+// the output interval: before, at 1e-9, steps crossed the pole and the runs went on to ~0.47 s.
+constexpr double kPoleTimeSpread = 1e-6;  // s, the spread the runs must stay within
+
+TEST(DynSimulation, ThePrintedPadeLawStopsAtTheSamePoleForEveryToleranceAndOutputInterval) {
+  const auto law = friction::make_law("pade-printed");
+  ASSERT_TRUE(law->has_poles());
+  for (const char* preset : {"egg-printed", "egg-homogeneous"}) {
+    const BodyOnPlane sys(egg_body(preset), PlaneContact{0.1, 1e7, 9.81}, *law);
+    double lo = 1e300, hi = -1e300;
+    for (const double tol : {1e-9, 1e-10, 1e-11, 1e-12}) {
+      for (const double dt : {1e-3, 7e-4, 1e-2}) {
+        RunOptions o;
+        o.t_end = 1.0;
+        o.output_dt = dt;
+        o.integrator.abs_tol = o.integrator.rel_tol = tol;
+        const RunSummary s = simulate(sys, paper_case_a(), o);
+        EXPECT_EQ(reason(s), "law-pole") << preset << " tol " << tol << " dt " << dt << ": " << s.message;
+        lo = std::min(lo, s.t_final);
+        hi = std::max(hi, s.t_final);
+      }
+    }
+    EXPECT_LT(hi - lo, kPoleTimeSpread) << preset << ": stops between " << lo << " and " << hi << " s";
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Observers may stop a run (dynamics/observer.h).
+template <class Exception>
+class FailingObserver final : public Observer {
+ public:
+  explicit FailingObserver(int good_samples) : good_(good_samples) {}
+  void sample(const Sample& s) override {
+    if (count_ == good_) throw Exception("test: the disk is full");
+    ++count_;
+    last_t = s.t;
+  }
+  double last_t = -1.0;
+
+ private:
+  int good_;
+  int count_ = 0;
+};
+
+TEST(DynSimulation, AnObserverThatFailsStopsTheRunAtOnceAndKeepsTheLastGoodState) {
+  const SlidingSphere p;
+  const auto law = friction::make_law("exact");
+  const BodyOnPlane sys(sphere_body(p.R, p.m), PlaneContact{p.k, p.lambda, p.g}, *law);
+  const double eps_s = PlaneContact{p.k, p.lambda, p.g}.static_height(p.m * p.g);
+  const StateVector x0 = make_state({p.v0, 0.0, 0.0}, Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitZ(), eps_s);
+  {
+    FailingObserver<OutputFailure> obs(5);
+    RunSummary s;
+    ASSERT_NO_THROW(s = simulate(sys, x0, tight(1.0, 0.01), &obs));
+    EXPECT_EQ(reason(s), "output-error");
+    EXPECT_NE(s.message.find("the disk is full"), std::string::npos) << s.message;
+    EXPECT_DOUBLE_EQ(obs.last_t, 0.04);  // samples at 0, ..., 0.04; the one at 0.05 failed
+    EXPECT_GE(s.t_final, 0.05);          // the step that holds t = 0.05
+    EXPECT_LT(s.t_final, 0.2);           // and no further
+    EXPECT_TRUE(s.x_final.allFinite());
+    EXPECT_GT(s.steps, 0);
+  }
+  {
+    FailingObserver<OutputLimitReached> obs(0);  // already the sample at t = 0
+    RunSummary s;
+    ASSERT_NO_THROW(s = simulate(sys, x0, tight(1.0, 0.01), &obs));
+    EXPECT_EQ(reason(s), "output-limit");
+    EXPECT_EQ(s.t_final, 0.0);
+    EXPECT_EQ(s.steps, 0);
+    EXPECT_EIGEN_NEAR(s.x_final, x0, 0.0);
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Absurd run options are rejected before anything runs, naming the key and the rule.
+void expect_rejected(const RunOptions& o, const std::vector<std::string>& words) {
+  try {
+    o.validate();
+    ADD_FAILURE() << "accepted; expected an error naming " << words.front();
+  } catch (const std::invalid_argument& e) {
+    for (const auto& w : words) EXPECT_NE(std::string(e.what()).find(w), std::string::npos) << e.what();
+  }
+}
+
+TEST(DynSimulation, AbsurdOutputIntervalsAndStepLimitsAreRejected) {
+  RunOptions o;
+  o.t_end = 1000.0;
+  o.output_dt = 1e-300;
+  expect_rejected(o, {"run.output_dt", "run.max_samples"});
+  o.output_dt = 1e-3;
+  o.integrator.max_step = 1e-300;
+  expect_rejected(o, {"run.max_step", "run.max_steps", "run.t_end"});
+  o.integrator.max_step = 1e-5;  // 1e7 steps of 1e-5 s reach only 100 s
+  expect_rejected(o, {"run.max_step"});
+  o.integrator.max_step = 1e-4;
+  EXPECT_NO_THROW(o.validate());
+  o.output_dt = 1e-5;  // 1e8 samples
+  expect_rejected(o, {"run.output_dt", "100000000 samples", "run.max_samples"});
+  o.max_samples = 200'000'000;  // unless the limit is raised on purpose
+  EXPECT_NO_THROW(o.validate());
+}
+
+// ---------------------------------------------------------------------------------------------
+// summary: which threshold ended the run, its value and where the value came from.
+TEST(DynSimulation, TheSummaryNamesTheThresholdsThatEndedTheRun) {
+  const auto law = friction::make_law("exact");
+  const double R = 0.05;
+  const BodyOnPlane sys(sphere_body(R, 1.0), PlaneContact{0.2, 1e7, 9.81}, *law);
+  const StateVector x0 =
+      make_state(Eigen::Vector3d::Zero(), {0.0, 0.0, 20.0}, Eigen::Vector3d::UnitZ(), sys.plane().static_height(9.81));
+  RunOptions o = tight(10.0, 0.1);
+  o.rest.kinetic_energy = 2e-5;  // given; the others default
+  const RunSummary s = simulate(sys, x0, o);
+  ASSERT_EQ(reason(s), "rest") << s.message;
+  const auto find = [&](const std::string& key) {
+    for (const auto& t : s.thresholds)
+      if (t.key == key) return t;
+    ADD_FAILURE() << key << " not recorded";
+    return Threshold{};
+  };
+  const Threshold spin = find("run.rest_spin");
+  EXPECT_DOUBLE_EQ(spin.value, kRestSpinFactor * std::sqrt(9.81 / R));  // a sphere's size is R
+  EXPECT_NE(spin.source.find("default"), std::string::npos) << spin.source;
+  EXPECT_NE(spin.source.find("sqrt(g/R)"), std::string::npos) << spin.source;
+  EXPECT_EQ(spin.unit, "1/s");
+  const Threshold kinetic = find("run.rest_kinetic_energy");
+  EXPECT_EQ(kinetic.value, 2e-5);
+  EXPECT_EQ(kinetic.source, "given");
+  (void)find("run.rest_slip_speed");
+  (void)find("run.settle_time");
+  (void)find("run.settle_normal_speed");
+  EXPECT_NE(s.rule.find("run.rest_kinetic_energy"), std::string::npos) << s.rule;
+}
+
+TEST(DynSimulation, AbsoluteTolerancesAreScaledPerComponent) {
+  const auto law = friction::make_law("exact");
+  const BodyOnPlane sys(sphere_body(0.05, 1.0), PlaneContact{0.2, 1e7, 9.81}, *law);
+  RunOptions o = tight(1e-3, 1e-3);
+  o.integrator.abs_tol = 1e-9;
+  const RunSummary s = simulate(sys, make_state({0.1, 0, 0}, {0, 0, 1}, Eigen::Vector3d::UnitZ(), -1e-4), o);
+  const double eps_s = std::abs(sys.plane().static_height(9.81));
+  EXPECT_DOUBLE_EQ(height(s.abs_tol), 1e-9 * eps_s);                          // m
+  EXPECT_DOUBLE_EQ(velocity(s.abs_tol)[1], 1e-9 * std::sqrt(9.81 * 0.05));   // m/s
+  EXPECT_DOUBLE_EQ(angular_velocity(s.abs_tol)[2], 1e-9 * std::sqrt(9.81 / 0.05));  // 1/s
+  EXPECT_DOUBLE_EQ(vertical(s.abs_tol)[0], 1e-9);
+  EXPECT_DOUBLE_EQ(slide_work(s.abs_tol), 1e-9 * 9.81 * 0.05);  // J
 }
 
 }  // namespace

@@ -1,11 +1,12 @@
 #pragma once
-// Helpers shared by the dynamics tests: an Eigen comparison that prints both sides, small test
-// laws with known behaviour, and common bodies.
+// Helpers shared by the dynamics tests: small test laws with known behaviour and common bodies
+// (EXPECT_EIGEN_NEAR, from tests/support/eigen_near.h, compares Eigen objects).
 
 #include <gtest/gtest.h>
 
 #include <Eigen/Core>
 #include <atomic>
+#include <limits>
 #include <cmath>
 #include <numbers>
 #include <sstream>
@@ -13,22 +14,11 @@
 #include <string>
 
 #include "dynamics/body.h"
+#include "dynamics/state.h"
+#include "tests/support/eigen_near.h"
 #include "friction/law.h"
 
 namespace frictionlab::testing {
-
-inline ::testing::AssertionResult vectors_near(const char* ea, const char* eb, const char* etol,
-                                               const Eigen::Vector3d& a, const Eigen::Vector3d& b, double tol) {
-  const double d = (a - b).norm();
-  if (d <= tol) return ::testing::AssertionSuccess();
-  std::ostringstream m;
-  m.precision(17);
-  m << "|" << ea << " - " << eb << "| = " << d << " > " << etol << " = " << tol << "\n  " << ea << " = ["
-    << a.transpose() << "]\n  " << eb << " = [" << b.transpose() << "]";
-  return ::testing::AssertionFailure() << m.str();
-}
-
-#define EXPECT_VEC_NEAR(a, b, tol) EXPECT_PRED_FORMAT3(::frictionlab::testing::vectors_near, a, b, tol)
 
 /// The brief's decoupled Coulomb law for a circular patch: F1 = kN when U > 0 (0 at U = 0),
 /// F2 = 0, M = (3 pi/16) k N a sign(Omega). Ignores b and psi. Counts its calls.
@@ -48,7 +38,7 @@ class CoulombCircleTestLaw final : public friction::FrictionLaw {
 };
 
 /// A smooth, coupled, dissipative law (the "ellipsoidal" law of Moller, Leine and Glocker,
-/// model-notes §1) with an extra F2 = kN U Omega a / (U^2 + (a Omega)^2 + a^2) so that every
+/// docs/model.md) with an extra F2 = kN U Omega a / (U^2 + (a Omega)^2 + a^2) so that every
 /// component of the friction is exercised: F1 = kN U / sqrt(U^2 + Rb^2 Omega^2), M = kN Rb^2 Omega
 /// / sqrt(...), Rb = (3 pi/16) sqrt(a b). F2 does no work (it is normal to the slip), so the law is
 /// dissipative. Zero at U = Omega = 0.
@@ -109,6 +99,32 @@ class ThrowingTestLaw final : public friction::FrictionLaw {
   }
 };
 
+/// The decoupled Coulomb forces of CoulombCircleTestLaw, and a declared singular set where the slip
+/// ratio s = U/(a |Omega|) passes s_pole: the F2 "denominator" is s - s_pole (through_zero = true,
+/// a pole) or 1/(s - s_pole) (false: it changes sign through infinity, which is no pole). The forces
+/// stay finite across it, so nothing but the watch of the denominators can notice the crossing.
+class DeclaredPoleTestLaw final : public friction::FrictionLaw {
+ public:
+  DeclaredPoleTestLaw(double s_pole, bool through_zero) : s_pole_(s_pole), through_zero_(through_zero) {}
+  [[nodiscard]] std::string_view name() const override { return "test-declared-pole"; }
+  [[nodiscard]] std::string_view summary() const override { return "finite forces, declared pole (tests)"; }
+  [[nodiscard]] bool has_poles() const override { return true; }
+  [[nodiscard]] friction::PoleDenominators pole_denominators(const friction::ContactInput& in) const override {
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    const double d = in.U / (in.a * std::abs(in.Omega)) - s_pole_;
+    return {nan, through_zero_ ? d : 1.0 / d, nan};
+  }
+
+ private:
+  [[nodiscard]] friction::FrictionForces do_evaluate(const friction::ContactInput& in) const override {
+    const double kN = in.k * in.N;
+    const double sgn = in.Omega > 0.0 ? 1.0 : (in.Omega < 0.0 ? -1.0 : 0.0);
+    return {in.U > 0.0 ? kN : 0.0, 0.0, 3.0 * std::numbers::pi / 16.0 * kN * in.a * sgn};
+  }
+  double s_pole_;
+  bool through_zero_;
+};
+
 /// A homogeneous sphere (m, R) with its centre of mass at the centre.
 inline dynamics::Body sphere_body(double radius, double mass) {
   dynamics::BodySpec spec;
@@ -118,12 +134,19 @@ inline dynamics::Body sphere_body(double radius, double mass) {
   return dynamics::make_body(spec);
 }
 
-/// One of the paper's eggs (model-notes §4), m = 2 kg.
+/// One of the paper's eggs (docs/model.md), m = 2 kg.
 inline dynamics::Body egg_body(const std::string& preset) {
   dynamics::BodySpec spec;
   spec.preset = preset;
   spec.mass = 2.0;
   return dynamics::make_body(spec);
+}
+
+/// The paper's case a (docs/model.md): gamma3 = 0.97, gamma2 = 0, omega = (0, 0, 100) 1/s, v = 0,
+/// eps0 = -0.3e-4 m.
+inline dynamics::StateVector paper_case_a() {
+  return dynamics::make_state(Eigen::Vector3d::Zero(), {0.0, 0.0, 100.0},
+                              {std::sqrt(1.0 - 0.97 * 0.97), 0.0, 0.97}, -0.3e-4);
 }
 
 }  // namespace frictionlab::testing

@@ -1,0 +1,142 @@
+#include "dynamics/pole_watch.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "friction/pade_printed_law.h"
+#include "friction/registry.h"
+
+// Counts heap allocations in this test program (the watch runs inside the right-hand side).
+#include "bench/allocation_counter.h"
+using frictionlab::bench::g_allocations;
+
+namespace frictionlab::dynamics {
+namespace {
+
+constexpr double kMu = 0.9, kPsi = 0.3, kA = 0.01, kOmega = 10.0;
+
+// A contact of the printed law's shape with slip ratio s = U/(a |Omega|).
+ContactState in_contact(double s, double psi = kPsi) {
+  ContactState c;
+  c.in_contact = true;
+  c.a = kA;
+  c.b = kMu * kA;
+  c.psi = psi;
+  c.Omega = kOmega;
+  c.U = s * kA * kOmega;
+  c.N = 10.0;
+  return c;
+}
+
+// The same body out of contact: the patch has shrunk to nothing (s = inf); its shape mu comes from
+// the principal radii, b/a = sqrt(R_min/R_max).
+ContactState out_of_contact() {
+  ContactState c = in_contact(1.0);
+  c.in_contact = false;
+  c.a = c.b = c.N = 0.0;
+  c.point.R_meridian = 0.3;
+  c.point.R_parallel = 0.3 * kMu * kMu;
+  return c;
+}
+
+// The positive root of the printed F2 denominator s^2 + a3 s + a4 (eq. (8), alpha = a, a4 < 0 for
+// 0 < psi < pi/2), from eq. (9)'s coefficients.
+double f2_root() {
+  const auto k = friction::pade_printed_coefficients(kMu, kPsi);
+  EXPECT_LT(k.a4, 0.0);
+  return 0.5 * (-k.a3 + std::sqrt(k.a3 * k.a3 - 4.0 * k.a4));
+}
+
+TEST(DynPoleWatch, ALawWithoutPolesIsNotWatched) {
+  const auto law = friction::make_law("exact");
+  PoleWatch w(*law, 0.1);
+  EXPECT_FALSE(w.active());
+  w.set_reference(in_contact(1.0));
+  EXPECT_EQ(w.crossing(in_contact(1e6)), -1);
+}
+
+TEST(DynPoleWatch, MapsAStateToItsShape) {
+  const auto law = friction::make_law("pade-printed");
+  const PoleWatch w(*law, 0.1);
+  const PoleWatch::Point p = w.point(in_contact(3.0));
+  EXPECT_NEAR(p.t, 1.0 / (1.0 + 3.0), 1e-15);
+  EXPECT_NEAR(p.mu, kMu, 1e-15);
+  EXPECT_EQ(p.psi, kPsi);
+  const PoleWatch::Point q = w.point(out_of_contact());
+  EXPECT_EQ(q.t, 0.0);
+  EXPECT_NEAR(q.mu, kMu, 1e-15);
+  ContactState no_spin = in_contact(3.0);
+  no_spin.Omega = 0.0;
+  EXPECT_EQ(w.point(no_spin).t, 0.0);  // s = inf
+  // The denominators at a point are the law's at any contact of that shape.
+  const auto d = w.denominators(p);
+  const friction::ContactInput in{3.0 * 0.02 * 7.0, 7.0, 0.02, 0.02 * kMu, kPsi, 3.0, 0.1};
+  const friction::PoleDenominators e = law->pole_denominators(in);
+  EXPECT_NEAR(d[0], e.F1, 1e-12 * std::abs(e.F1));
+  EXPECT_NEAR(d[1], e.F2, 1e-12 * std::abs(e.F2));
+  EXPECT_NEAR(d[2], e.M, 1e-12 * std::abs(e.M));
+}
+
+TEST(DynPoleWatch, FindsTheRealPoleOfThePrintedF2) {
+  const auto law = friction::make_law("pade-printed");
+  PoleWatch w(*law, 0.1);
+  ASSERT_TRUE(w.active());
+  const double s_r = f2_root();
+  w.set_reference(in_contact(0.9 * s_r));
+  EXPECT_EQ(w.crossing(in_contact(0.99 * s_r)), -1);
+  EXPECT_EQ(w.crossing(in_contact(1.01 * s_r)), 1);  // F2
+  EXPECT_EQ(w.crossing(in_contact(s_r * (1.0 + 1e-12))), 1);
+  w.set_reference(in_contact(1.1 * s_r));  // and from the other side
+  EXPECT_EQ(w.crossing(in_contact(0.9 * s_r)), 1);
+  EXPECT_EQ(w.crossing(in_contact(1e9)), -1);
+}
+
+TEST(DynPoleWatch, LandingAndLiftingOffWithSlipCrossTheRealPole) {
+  // Out of contact the patch has no size: s = inf, where the F2 denominator is positive.
+  const auto law = friction::make_law("pade-printed");
+  PoleWatch w(*law, 0.1);
+  const double s_r = f2_root();
+  w.set_reference(out_of_contact());
+  EXPECT_EQ(w.crossing(in_contact(2.0 * s_r)), -1);
+  EXPECT_EQ(w.crossing(in_contact(0.5 * s_r)), 1);
+  w.set_reference(in_contact(0.5 * s_r));
+  EXPECT_EQ(w.crossing(out_of_contact()), 1);
+}
+
+TEST(DynPoleWatch, ASignChangeThroughInfinityIsNoPole) {
+  // As psi passes 0 (mod pi), d6 = (1 - mu^(1/4)) sin 2psi changes sign and a4 = -8/(3 mu^(3/4) pi
+  // d6) jumps from -inf to +inf: the F2 denominator changes sign, but F2 goes smoothly through 0.
+  const auto law = friction::make_law("pade-printed");
+  PoleWatch w(*law, 0.1);
+  const ContactState before = in_contact(5.0, 0.01), after = in_contact(5.0, std::numbers::pi - 0.01);
+  const auto p0 = w.denominators(w.point(before)), p1 = w.denominators(w.point(after));
+  ASSERT_LT(p0[1], 0.0);
+  ASSERT_GT(p1[1], 0.0);
+  w.set_reference(before);
+  EXPECT_EQ(w.crossing(after), -1);
+  // The same at psi = pi/2, where sin 2psi changes sign too.
+  w.set_reference(in_contact(5.0, std::numbers::pi / 2 - 0.01));
+  EXPECT_EQ(w.crossing(in_contact(5.0, std::numbers::pi / 2 + 0.01)), -1);
+}
+
+TEST(DynPoleWatch, WatchingMakesNoHeapAllocation) {
+  const auto law = friction::make_law("pade-printed");
+  PoleWatch w(*law, 0.1);
+  const double s_r = f2_root();
+  w.set_reference(in_contact(0.9 * s_r));
+  (void)w.crossing(in_contact(2.0));  // warm-up
+  const long long before = g_allocations.load();
+  int found = 0;
+  for (int i = 0; i < 100; ++i) {
+    found += w.crossing(in_contact(0.5 * s_r + 0.01 * i)) >= 0;
+    found += w.crossing(in_contact(1.5 * s_r)) >= 0;  // a sign change, classified by bisection
+    found += w.crossing(in_contact(5.0, std::numbers::pi - 0.01)) >= 0;
+  }
+  EXPECT_EQ(g_allocations.load() - before, 0);
+  EXPECT_EQ(found, 100);
+}
+
+}  // namespace
+}  // namespace frictionlab::dynamics
