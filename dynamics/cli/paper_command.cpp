@@ -8,8 +8,6 @@
 
 #include <unistd.h>
 
-#include <atomic>
-#include <csignal>
 #include <cstdio>
 #include <memory>
 #include <string>
@@ -17,14 +15,12 @@
 
 #include "dynamics/cli/commands.h"
 #include "dynamics/paper/experiment_job.h"
+#include "friction/support/interrupt_guard.h"
 
 namespace frictionlab::cli {
 namespace {
 
 constexpr int kExitIncomplete = 3;
-
-std::atomic<bool> g_paper_interrupted{false};
-extern "C" void on_paper_signal(int) { g_paper_interrupted.store(true); }
 
 struct PaperCliOptions {
   std::string out;
@@ -60,22 +56,15 @@ void run(const PaperCliOptions& opt) {
   job.figures = !opt.no_figures;
   job.log = stderr;
   job.live_status = isatty(STDERR_FILENO) != 0;
-  job.cancel = &g_paper_interrupted;
   job.command = opt.command;
 
-  g_paper_interrupted.store(false);
-  auto* previous_int = std::signal(SIGINT, on_paper_signal);
-  auto* previous_term = std::signal(SIGTERM, on_paper_signal);
   paper::JobOutcome outcome;
-  try {
+  {
+    // Ctrl-C, kill or a lost terminal: running runs stop between steps, the report covers them.
+    const support::InterruptGuard interrupts;
+    job.cancel = &interrupts.flag();
     outcome = paper::run_paper_job(job);
-  } catch (...) {
-    std::signal(SIGINT, previous_int);
-    std::signal(SIGTERM, previous_term);
-    throw;
   }
-  std::signal(SIGINT, previous_int);
-  std::signal(SIGTERM, previous_term);
 
   int early = 0;
   for (const auto& r : outcome.results)

@@ -6,9 +6,7 @@
 
 #include <unistd.h>
 
-#include <atomic>
 #include <chrono>
-#include <csignal>
 #include <cstdio>
 #include <iostream>
 #include <string>
@@ -18,6 +16,7 @@
 #include "dynamics/scenario.h"
 #include "dynamics/scenario_run.h"
 #include "friction/registry.h"
+#include "friction/support/interrupt_guard.h"
 
 namespace frictionlab::cli {
 namespace {
@@ -25,9 +24,6 @@ namespace {
 constexpr int kExitStoppedEarly = 3;
 constexpr double kProgressRefreshSeconds = 0.1;
 constexpr int kProgressBarWidth = 40;
-
-std::atomic<bool> g_interrupted{false};
-extern "C" void on_signal(int) { g_interrupted.store(true); }
 
 // A one-line progress bar in simulated time, on stderr (only used when stderr is a terminal).
 class ProgressBar final : public dynamics::Observer {
@@ -74,22 +70,12 @@ void run(const SimulateOptions& opt) {
 
   std::unique_ptr<ProgressBar> bar;
   if (isatty(STDERR_FILENO)) bar = std::make_unique<ProgressBar>(scenario.run.t_end);
-  // Ctrl-C or kill: stop between steps and still write the summary (reason "interrupted").
-  g_interrupted.store(false);
-  auto* previous_int = std::signal(SIGINT, on_signal);
-  auto* previous_term = std::signal(SIGTERM, on_signal);
-  const auto restore = [&] {
-    std::signal(SIGINT, previous_int);
-    std::signal(SIGTERM, previous_term);
-  };
   dynamics::ScenarioRun result;
-  try {
-    result = dynamics::run_scenario(scenario, *law, opt.out, bar.get(), &g_interrupted);
-  } catch (...) {
-    restore();
-    throw;
+  {
+    // Ctrl-C, kill or a lost terminal: stop between steps and still write the summary.
+    const support::InterruptGuard interrupts;
+    result = dynamics::run_scenario(scenario, *law, opt.out, bar.get(), &interrupts.flag());
   }
-  restore();
   bar.reset();
 
   const dynamics::RunSummary& s = result.summary;
