@@ -6,6 +6,7 @@
 #include "dynamics/equations_of_motion.h"
 #include "dynamics/summary_json.h"
 #include "dynamics/trajectory_csv.h"
+#include "friction/support/checked_output.h"
 
 namespace frictionlab::dynamics {
 namespace {
@@ -58,9 +59,9 @@ ScenarioRun run_scenario(const Scenario& scenario, const friction::FrictionLaw& 
   run.summary = simulate(sys, x0, options, &tee);
   csv.flush();
 
-  std::ofstream json = open_for_writing(run.summary_json);
-  write_summary_json(json, scenario, sys.body(), law.name(), run.summary);
-  if (!csv || !json) throw std::runtime_error("writing the output in '" + out_dir.string() + "' failed");
+  if (!csv) throw std::runtime_error("writing the output in '" + out_dir.string() + "' failed");
+  support::write_file_atomically(run.summary_json,
+                                 support::json_text(summary_json(scenario, sys.body(), law.name(), run.summary)));
   return run;
 }
 

@@ -1,147 +1,57 @@
 #include "dynamics/summary_json.h"
 
-#include <charconv>
-#include <cmath>
-#include <string>
-#include <vector>
-
 namespace frictionlab::dynamics {
 namespace {
 
-std::string json_string(std::string_view s) {
-  std::string out = "\"";
-  for (const char ch : s) {
-    switch (ch) {
-      case '"': out += "\\\""; break;
-      case '\\': out += "\\\\"; break;
-      case '\n': out += "\\n"; break;
-      case '\t': out += "\\t"; break;
-      case '\r': out += "\\r"; break;
-      default:
-        if (static_cast<unsigned char>(ch) < 0x20) {
-          char buf[8];
-          std::snprintf(buf, sizeof buf, "\\u%04x", static_cast<unsigned>(static_cast<unsigned char>(ch)));
-          out += buf;
-        } else {
-          out += ch;
-        }
-    }
-  }
-  return out + "\"";
-}
-
-std::string number(double x) {
-  if (!std::isfinite(x)) return "null";
-  char buf[32];
-  const auto r = std::to_chars(buf, buf + sizeof buf, x);
-  return std::string(buf, r.ptr);
-}
-
-std::string array(const double* x, int n) {
-  std::string out = "[";
-  for (int i = 0; i < n; ++i) out += (i ? ", " : "") + number(x[i]);
-  return out + "]";
-}
-
-std::string vec3(const Eigen::Vector3d& v) { return array(v.data(), 3); }
-
-// A tiny writer for one JSON object with nesting by indentation.
-class Json {
- public:
-  explicit Json(std::ostream& out) : out_(out) { out_ << "{"; }
-  void key(std::string_view k, const std::string& raw_value) {
-    out_ << (first_ ? "\n" : ",\n") << indent() << json_string(k) << ": " << raw_value;
-    first_ = false;
-  }
-  void open(std::string_view k) {
-    out_ << (first_ ? "\n" : ",\n") << indent() << json_string(k) << ": {";
-    ++depth_;
-    first_ = true;
-  }
-  void close() {
-    --depth_;
-    out_ << "\n" << indent() << "}";
-    first_ = false;
-  }
-  void finish() { out_ << "\n}\n"; }
-
- private:
-  std::string indent() const { return std::string(2 * static_cast<std::size_t>(depth_ + 1), ' '); }
-  std::ostream& out_;
-  int depth_ = 0;
-  bool first_ = true;
-};
+support::Json vec3(const Eigen::Vector3d& v) { return support::Json::array({v[0], v[1], v[2]}); }
 
 }  // namespace
 
-void write_summary_json(std::ostream& out, const Scenario& scenario, const Body& body, std::string_view law,
-                        const RunSummary& s) {
+support::Json summary_json(const Scenario& scenario, const Body& body, std::string_view law, const RunSummary& s) {
   const double weight = body.mass * scenario.contact.g;
   const StateVector& x = s.x_final;
-  Json j(out);
-  j.open("scenario");
-  j.key("name", json_string(scenario.name));
-  j.key("source", json_string(scenario.source));
-  std::string ov = "[";
-  for (std::size_t i = 0; i < scenario.overrides.size(); ++i) ov += (i ? ", " : "") + json_string(scenario.overrides[i]);
-  j.key("overrides", ov + "]");
-  j.close();
-  j.key("law", json_string(law));
-  j.open("termination");
-  j.key("reason", json_string(to_string(s.reason)));
-  j.key("message", json_string(s.message));
-  j.close();
-  j.key("final_time", number(s.t_final));
-  j.key("t_end", number(scenario.run.t_end));
-  j.key("steps", std::to_string(s.steps));
-  j.key("rejected_steps", std::to_string(s.rejected_steps));
-  j.key("rhs_calls", std::to_string(s.rhs_calls));
-  j.key("wall_time_s", number(s.wall_time));
-  j.key("liftoffs", std::to_string(s.liftoffs));
-  j.key("landings", std::to_string(s.landings));
-  j.key("min_N_over_mg", weight > 0.0 ? number(s.min_normal_force / weight) : "null");
-  j.key("initial_energy", number(s.initial_energy));
-  j.key("final_energy", number(s.final_energy));
-  j.key("work_sliding", number(slide_work(x)));
-  j.key("work_spinning", number(spin_work(x)));
-  j.key("energy_balance_error", number(s.final_energy + slide_work(x) + spin_work(x) - s.initial_energy));
-  j.key("max_gamma_drift", number(s.max_gamma_drift));
-  j.open("final_state");
-  j.key("t", number(s.t_final));
-  j.key("gamma", vec3(vertical(x)));
-  j.key("omega", vec3(angular_velocity(x)));
-  j.key("v", vec3(velocity(x)));
-  j.key("eps", number(height(x)));
-  j.close();
-  j.open("body");
-  j.key("profile", json_string(scenario.body.preset.empty() ? "chi2" : scenario.body.preset));
-  const auto& c = body.profile.chi2().coefficients();
-  j.key("chi2", array(c.data(), static_cast<int>(c.size())));
-  j.key("z_lo", number(body.profile.z_lo()));
-  j.key("z_hi", number(body.profile.z_hi()));
-  j.key("mass", number(body.mass));
-  j.key("com", number(body.com));
-  j.key("A", number(body.A));
-  j.key("C", number(body.C));
-  j.key("homogeneous_centroid", number(body.homogeneous.centroid));
-  j.close();
-  j.open("contact");
-  j.key("k", number(scenario.contact.k));
-  j.key("lambda", number(scenario.contact.lambda));
-  j.key("g", number(scenario.contact.g));
-  j.close();
-  j.open("integrator");
-  j.key("method", json_string(scenario.run.integrator.method));
-  j.key("abs_tol", number(scenario.run.integrator.abs_tol));
-  j.key("rel_tol", number(scenario.run.integrator.rel_tol));
-  j.key("output_dt", number(scenario.run.output_dt));
-  j.close();
-  j.open("rest_thresholds");
-  j.key("slip_speed", number(scenario.run.rest.slip_speed));
-  j.key("spin", number(scenario.run.rest.spin));
-  j.key("kinetic_energy", number(scenario.run.rest.kinetic_energy));
-  j.close();
-  j.finish();
+  support::Json j;
+  j["scenario"] = {{"name", scenario.name}, {"source", scenario.source}, {"overrides", scenario.overrides}};
+  j["law"] = law;
+  j["termination"] = {{"reason", to_string(s.reason)}, {"message", s.message}};
+  j["final_time"] = s.t_final;
+  j["t_end"] = scenario.run.t_end;
+  j["steps"] = s.steps;
+  j["rejected_steps"] = s.rejected_steps;
+  j["rhs_calls"] = s.rhs_calls;
+  j["wall_time_s"] = s.wall_time;
+  j["liftoffs"] = s.liftoffs;
+  j["landings"] = s.landings;
+  j["min_N_over_mg"] = weight > 0.0 ? support::Json(s.min_normal_force / weight) : support::Json(nullptr);
+  j["initial_energy"] = s.initial_energy;
+  j["final_energy"] = s.final_energy;
+  j["work_sliding"] = slide_work(x);
+  j["work_spinning"] = spin_work(x);
+  j["energy_balance_error"] = s.final_energy + slide_work(x) + spin_work(x) - s.initial_energy;
+  j["max_gamma_drift"] = s.max_gamma_drift;
+  j["final_state"] = {{"t", s.t_final},
+                      {"gamma", vec3(vertical(x))},
+                      {"omega", vec3(angular_velocity(x))},
+                      {"v", vec3(velocity(x))},
+                      {"eps", height(x)}};
+  j["body"] = {{"profile", scenario.body.preset.empty() ? std::string("chi2") : scenario.body.preset},
+               {"chi2", body.profile.chi2().coefficients()},
+               {"z_lo", body.profile.z_lo()},
+               {"z_hi", body.profile.z_hi()},
+               {"mass", body.mass},
+               {"com", body.com},
+               {"A", body.A},
+               {"C", body.C},
+               {"homogeneous_centroid", body.homogeneous.centroid}};
+  j["contact"] = {{"k", scenario.contact.k}, {"lambda", scenario.contact.lambda}, {"g", scenario.contact.g}};
+  j["integrator"] = {{"method", scenario.run.integrator.method},
+                     {"abs_tol", scenario.run.integrator.abs_tol},
+                     {"rel_tol", scenario.run.integrator.rel_tol},
+                     {"output_dt", scenario.run.output_dt}};
+  j["rest_thresholds"] = {{"slip_speed", scenario.run.rest.slip_speed},
+                          {"spin", scenario.run.rest.spin},
+                          {"kinetic_energy", scenario.run.rest.kinetic_energy}};
+  return j;
 }
 
 }  // namespace frictionlab::dynamics

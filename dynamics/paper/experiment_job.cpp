@@ -11,6 +11,7 @@
 #include "dynamics/paper/figure_scripts.h"
 #include "dynamics/paper/run_progress.h"
 #include "dynamics/scenario.h"
+#include "friction/support/number_format.h"
 
 namespace frictionlab::dynamics::paper {
 namespace {
@@ -22,11 +23,7 @@ std::string now_text() {
   return buf;
 }
 
-std::string short_num(double x) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.4g", x);
-  return buf;
-}
+std::string short_num(double x) { return support::significant(x, 4); }
 
 // "gamma3(0) = 0.97, omega(0) = (0, 0, 100) 1/s" from the scenario as run.
 std::string initial_description(const RunSpec& spec) {

@@ -1,13 +1,12 @@
 #include "dynamics/paper/experiment_plan.h"
 
 #include <algorithm>
-#include <charconv>
-#include <cstdio>
 #include <set>
 #include <stdexcept>
 
 #include "dynamics/scenario.h"
 #include "friction/registry.h"
+#include "friction/support/number_format.h"
 
 #ifndef FRICTIONLAB_SOURCE_DIR
 #define FRICTIONLAB_SOURCE_DIR "."
@@ -32,18 +31,8 @@ void check_names(const std::vector<std::string>& given, const std::vector<std::s
   }
 }
 
-std::string shortest(double x) {
-  char buf[32];
-  const auto r = std::to_chars(buf, buf + sizeof buf, x);
-  return std::string(buf, r.ptr);
-}
-
 // Three significant digits: 1e-9 * 0.1 is "1e-10", not "1.0000000000000002e-10".
-std::string tolerance(double x) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.3g", x);
-  return buf;
-}
+std::string tolerance(double x) { return support::significant(x, 3); }
 
 }  // namespace
 
@@ -97,7 +86,7 @@ std::filesystem::path default_scenario_dir() {
 
 std::vector<RunSpec> plan_runs(const PlanOptions& options) {
   options.validate();
-  const std::vector<std::string> paper_defaults = {"run.output_dt=" + shortest(kPaperOutputDt)};
+  const std::vector<std::string> paper_defaults = {"run.output_dt=" + support::shortest(kPaperOutputDt)};
   std::vector<RunSpec> runs;
   for (const auto& egg : options.eggs) {
     for (const auto& c : options.cases) {

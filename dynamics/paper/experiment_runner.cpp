@@ -2,8 +2,6 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cstdio>
-#include <fstream>
 #include <stdexcept>
 #include <thread>
 
@@ -14,24 +12,14 @@
 #include "dynamics/scenario.h"
 #include "dynamics/scenario_run.h"
 #include "friction/registry.h"
+#include "friction/support/checked_output.h"
+#include "friction/support/number_format.h"
 
 namespace frictionlab::dynamics::paper {
 namespace {
 
 // Samples to reserve at most (the recorder grows beyond if needed).
 constexpr std::size_t kMaxReserve = 1'000'000;
-
-std::string fixed(double x, int digits) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.*f", digits, x);
-  return buf;
-}
-
-std::string general(double x) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.4g", x);
-  return buf;
-}
 
 void run_one(RunResult& r, const RunnerOptions& options, std::atomic<double>* progress_t) {
   const RunSpec& spec = r.spec;
@@ -50,11 +38,8 @@ void run_one(RunResult& r, const RunnerOptions& options, std::atomic<double>* pr
 
   RunSeries& s = recorder.series();
   r.features = extract_features(s, r.thresholds);
-  {
-    std::ofstream json(spec.out_dir / "features.json");
-    write_features_json(json, r.features, r.thresholds);
-    if (!json) throw std::runtime_error("cannot write '" + (spec.out_dir / "features.json").string() + "'");
-  }
+  support::write_file_atomically(spec.out_dir / "features.json",
+                                 support::json_text(features_json(r.features, r.thresholds)));
   if (!options.plot_data_dir.empty())
     r.figure_ranges = write_figure_data(options.plot_data_dir, spec.group() + "-" + spec.label, s);
   r.gamma3_smooth = moving_average(s.t, s.gamma3, r.thresholds.smoothing_window);
@@ -81,8 +66,9 @@ int worker_count(int jobs) {
 
 std::string describe(const RunResult& r) {
   if (!r.executed) return "not run: " + r.error;
-  std::string out = std::string(to_string(r.summary.reason)) + " at t = " + general(r.summary.t_final) + " s, " +
-                    fixed(r.summary.wall_time, 2) + " s wall, " + std::to_string(r.summary.rhs_calls) + " RHS calls";
+  std::string out = std::string(to_string(r.summary.reason)) + " at t = " + support::significant(r.summary.t_final, 4) +
+                    " s, " + support::fixed(r.summary.wall_time, 2) + " s wall, " + std::to_string(r.summary.rhs_calls) +
+                    " RHS calls";
   if (!r.ended_normally() && !r.summary.message.empty()) out += " (" + r.summary.message + ")";
   if (!r.error.empty()) out += "; " + r.error;
   return out;

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
-#include <cstdio>
 
 namespace frictionlab::support {
 namespace {
@@ -11,12 +10,16 @@ namespace {
 // Non-finite values in one spelling (printf and to_chars would write "-nan" for a negative NaN).
 const char* non_finite(double x) { return std::isnan(x) ? "nan" : x > 0 ? "inf" : "-inf"; }
 
-std::string printf_format(double x, int digits, char conversion) {
-  if (!std::isfinite(x)) return non_finite(x);
-  const char format[] = {'%', '.', '*', conversion, '\0'};
+// std::to_chars with a precision prints exactly as printf's %.<precision><conversion> would, but
+// without the locale.
+void append_formatted(std::string& out, double x, std::chars_format format, int precision) {
+  if (!std::isfinite(x)) {
+    out += non_finite(x);
+    return;
+  }
   char buf[400];  // %.17f of 1e308 has 309 digits before the point
-  const int n = std::snprintf(buf, sizeof buf, format, std::clamp(digits, 0, 17), x);
-  return std::string(buf, static_cast<std::size_t>(std::clamp(n, 0, static_cast<int>(sizeof buf) - 1)));
+  const auto r = std::to_chars(buf, buf + sizeof buf, x, format, precision);
+  out.append(buf, r.ptr);
 }
 
 }  // namespace
@@ -39,9 +42,21 @@ void append_shortest(std::string& out, double x) {
 
 std::string message_number(double x) { return significant(x, 10); }
 
-std::string significant(double x, int digits) { return printf_format(x, std::max(digits, 1), 'g'); }
+std::string significant(double x, int digits) {
+  std::string out;
+  append_significant(out, x, digits);
+  return out;
+}
 
-std::string fixed(double x, int digits) { return printf_format(x, digits, 'f'); }
+void append_significant(std::string& out, double x, int digits) {
+  append_formatted(out, x, std::chars_format::general, std::clamp(digits, 1, 17));
+}
+
+std::string fixed(double x, int digits) {
+  std::string out;
+  append_formatted(out, x, std::chars_format::fixed, std::clamp(digits, 0, 17));
+  return out;
+}
 
 std::string message_list(std::span<const double> values) {
   std::string out = "[";

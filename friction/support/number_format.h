@@ -21,9 +21,11 @@ namespace frictionlab::support {
 void append_shortest(std::string& out, double x);
 /// 10 significant digits, for messages.
 [[nodiscard]] std::string message_number(double x);
-/// `digits` significant digits (1 to 17), as printf's %.<digits>g.
+/// `digits` significant digits (1 to 17), as printf's %.<digits>g (but never localised).
 [[nodiscard]] std::string significant(double x, int digits);
-/// `digits` digits after the decimal point (0 to 17), as printf's %.<digits>f.
+/// Appends significant(x, digits) to `out` without a temporary (bulk tables).
+void append_significant(std::string& out, double x, int digits);
+/// `digits` digits after the decimal point (0 to 17), as printf's %.<digits>f (never localised).
 [[nodiscard]] std::string fixed(double x, int digits);
 /// "[a, b, c]" with message numbers.
 [[nodiscard]] std::string message_list(std::span<const double> values);

@@ -6,6 +6,7 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <cstdlib>
 #include <limits>
 #include <random>
@@ -74,6 +75,22 @@ TEST(SupportNumberFormat, SignificantAndFixedFollowPrintf) {
   EXPECT_EQ(fixed(2.0 / 3.0, 2), "0.67");
   EXPECT_EQ(fixed(1e20, 0), "100000000000000000000");
   EXPECT_EQ(fixed(-1e308, 17).substr(0, 5), "-1000");  // no truncation at the buffer's end
+}
+
+TEST(SupportNumberFormat, SignificantMatchesPrintf) {
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> exponent(-300.0, 300.0);
+  for (int i = 0; i < 2000; ++i) {
+    const double x = std::pow(10.0, exponent(rng)) * (i % 2 ? -1.0 : 1.0);
+    for (const int digits : {1, 3, 4, 10, 17}) {
+      char buf[64];
+      std::snprintf(buf, sizeof buf, "%.*g", digits, x);
+      EXPECT_EQ(significant(x, digits), buf);
+      std::string appended = "x";
+      append_significant(appended, x, digits);
+      EXPECT_EQ(appended, "x" + std::string(buf));
+    }
+  }
 }
 
 TEST(SupportNumberFormat, MessageListBrackets) {
