@@ -2,11 +2,16 @@
 
 #include <toml++/toml.h>
 
+#include <cerrno>
 #include <cmath>
+#include <cstring>
 #include <fstream>
 #include <set>
 #include <sstream>
 #include <stdexcept>
+
+#include "friction/registry.h"
+#include "friction/support/errors.h"
 
 namespace frictionlab::dynamics {
 namespace {
@@ -160,36 +165,69 @@ void apply_override(toml::table& root, const std::string& assignment) {
   }
 }
 
-Scenario build(const toml::table& root, const std::string& source, const std::vector<std::string>& overrides) {
-  Scenario s;
-  s.source = source;
-  s.overrides = overrides;
-
-  Section top(&root, "");
-  s.name = top.string("name", std::filesystem::path(source).stem().string());
-  s.description = top.string("description", "");
-  for (const char* sec : {"body", "contact", "initial", "run"}) (void)top.has(sec);
-  top.check_no_unknown_keys({"name", "description", "[body]", "[contact]", "[initial]", "[run]"});
-
-  // [body]
+// Reads [body] as written (the body itself is built from it once, by the caller).
+BodySpec read_body_spec(const toml::table& root) {
+  BodySpec spec;
   Section body(section_table(root, "body", true), "body");
-  if (body.has("profile")) s.body.preset = body.string("profile", "");
+  if (body.has("profile")) spec.preset = body.string("profile", "");
   if (body.has("chi2")) {
-    s.body.chi2 = body.numbers("chi2");
-    if (s.body.chi2.empty()) fail("body.chi2 must list at least one coefficient");
+    spec.chi2 = body.numbers("chi2");
+    if (spec.chi2.empty()) fail("body.chi2 must list at least one coefficient");
   }
-  s.body.radius = body.optional_number("radius");
+  spec.radius = body.optional_number("radius");
   if (body.has("semi_axes")) {
     const std::vector<double> ax = body.numbers("semi_axes");
     if (ax.size() != 2) fail("body.semi_axes must be [equatorial, polar], got " + std::to_string(ax.size()) + " values");
-    s.body.semi_axes = std::array<double, 2>{ax[0], ax[1]};
+    spec.semi_axes = std::array<double, 2>{ax[0], ax[1]};
   }
-  s.body.mass = body.number("mass");
-  s.body.com = body.optional_number("com");
-  s.body.A = body.optional_number("A");
-  s.body.C = body.optional_number("C");
+  spec.mass = body.number("mass");
+  spec.com = body.optional_number("com");
+  spec.A = body.optional_number("A");
+  spec.C = body.optional_number("C");
   body.check_no_unknown_keys({"profile", "chi2", "radius", "semi_axes", "mass", "com", "A", "C"});
-  const Body built = make_body(s.body);  // validates the profile and mass properties now
+  return spec;
+}
+
+void check_law(const std::string& law) {
+  std::string known;
+  for (const auto& info : friction::list_laws()) {
+    if (info.name == law) return;
+    known += (known.empty() ? "" : ", ") + info.name;
+  }
+  throw support::invalid_value("contact.law", std::string_view(law), "it is not a known friction law; known: " + known);
+}
+
+// The scenario after overrides as TOML, with what was left to defaults that a rerun from another
+// file name would resolve differently (the name) or that defines the run (the law) written out.
+std::string resolved_text(toml::table root, const std::string& name, const std::string& law) {
+  root.insert_or_assign("name", name);
+  if (toml::table* contact = root["contact"].as_table()) contact->insert_or_assign("law", law);
+  std::ostringstream out;
+  out << root;
+  return out.str();
+}
+
+Scenario build(const toml::table& root, const std::string& source, const std::vector<std::string>& overrides) {
+  Section top(&root, "");
+  const std::string name = top.string("name", std::filesystem::path(source).stem().string());
+  const std::string description = top.string("description", "");
+  for (const char* sec : {"body", "contact", "initial", "run"}) (void)top.has(sec);
+  top.check_no_unknown_keys({"name", "description", "[body]", "[contact]", "[initial]", "[run]"});
+
+  // [body]: read, then built once (make_body validates the profile and the mass properties).
+  BodySpec spec = read_body_spec(root);
+  Body built = make_body(spec);
+  Scenario s{.name = name,
+             .description = description,
+             .source = source,
+             .overrides = overrides,
+             .body_spec = std::move(spec),
+             .body = std::move(built),
+             .contact = {},
+             .law = {},
+             .initial = {},
+             .run = {},
+             .resolved_toml = {}};
 
   // [contact]
   Section contact(section_table(root, "contact", true), "contact");
@@ -199,6 +237,7 @@ Scenario build(const toml::table& root, const std::string& source, const std::ve
   s.law = contact.string("law", "exact");
   contact.check_no_unknown_keys({"k", "lambda", "g", "law"});
   s.contact.validate();
+  check_law(s.law);
 
   // [initial]
   Section init(section_table(root, "initial", true), "initial");
@@ -218,7 +257,7 @@ Scenario build(const toml::table& root, const std::string& source, const std::ve
   if (eps.is_string()) {
     if (*eps.value<std::string>() != "static")
       fail("initial.eps must be a number (m) or \"static\", got \"" + *eps.value<std::string>() + "\"");
-    s.initial.eps = s.contact.static_height(built.mass * s.contact.g);
+    s.initial.eps = s.contact.static_height(s.body.mass * s.contact.g);
   } else {
     s.initial.eps = Section::as_number(eps, "initial.eps");
   }
@@ -247,37 +286,59 @@ Scenario build(const toml::table& root, const std::string& source, const std::ve
                              "stop_when_rolling"});
   r.validate();
 
-  std::ostringstream resolved;
-  resolved << root;
-  s.resolved_toml = resolved.str();
+  s.resolved_toml = resolved_text(root, s.name, s.law);
   return s;
 }
 
 }  // namespace
 
-Scenario parse_scenario(std::string_view toml_text, const std::string& source, const std::vector<std::string>& overrides) {
+struct ScenarioDocument::Parsed {
   toml::table root;
+};
+
+ScenarioDocument::ScenarioDocument(std::shared_ptr<const Parsed> parsed, std::string source)
+    : parsed_(std::move(parsed)), source_(std::move(source)) {}
+
+ScenarioDocument ScenarioDocument::parse(std::string_view toml_text, const std::string& source) {
+  auto parsed = std::make_shared<Parsed>();
   try {
-    root = toml::parse(toml_text, source);
+    parsed->root = toml::parse(toml_text, source);
   } catch (const toml::parse_error& e) {
     std::ostringstream m;
     m << source << ":" << e.source().begin.line << ":" << e.source().begin.column << ": " << e.description();
     fail(m.str());
   }
+  return ScenarioDocument(std::move(parsed), source);
+}
+
+ScenarioDocument ScenarioDocument::read(const std::filesystem::path& file) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(file, ec))
+    fail("scenario file '" + file.string() + "' is a folder: give the path of a .toml file");
+  std::ifstream in(file, std::ios::binary);
+  if (!in) fail("cannot read scenario file '" + file.string() + "': " + std::strerror(errno));
+  std::stringstream buf;
+  buf << in.rdbuf();
+  if (in.bad()) fail("cannot read scenario file '" + file.string() + "': " + std::strerror(errno));
+  return parse(buf.str(), file.string());
+}
+
+Scenario ScenarioDocument::resolve(const std::vector<std::string>& overrides) const {
+  toml::table root = parsed_->root;
   for (const auto& o : overrides) apply_override(root, o);
   try {
-    return build(root, source, overrides);
+    return build(root, source_, overrides);
   } catch (const std::invalid_argument& e) {
-    fail(source + ": " + e.what());
+    fail(source_ + ": " + e.what());
   }
 }
 
+Scenario parse_scenario(std::string_view toml_text, const std::string& source, const std::vector<std::string>& overrides) {
+  return ScenarioDocument::parse(toml_text, source).resolve(overrides);
+}
+
 Scenario load_scenario(const std::filesystem::path& file, const std::vector<std::string>& overrides) {
-  std::ifstream in(file);
-  if (!in) fail("cannot read scenario file '" + file.string() + "'");
-  std::stringstream buf;
-  buf << in.rdbuf();
-  return parse_scenario(buf.str(), file.string(), overrides);
+  return ScenarioDocument::read(file).resolve(overrides);
 }
 
 StateVector initial_state(const Scenario& s) {

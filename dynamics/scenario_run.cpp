@@ -6,7 +6,9 @@
 #include "dynamics/equations_of_motion.h"
 #include "dynamics/summary_json.h"
 #include "dynamics/trajectory_csv.h"
+#include "friction/registry.h"
 #include "friction/support/checked_output.h"
+#include "friction/support/errors.h"
 
 namespace frictionlab::dynamics {
 namespace {
@@ -37,9 +39,10 @@ std::ofstream open_for_writing(const std::filesystem::path& p) {
 
 }  // namespace
 
-ScenarioRun run_scenario(const Scenario& scenario, const friction::FrictionLaw& law,
-                         const std::filesystem::path& out_dir, Observer* progress, const std::atomic<bool>* cancel) {
-  const BodyOnPlane sys(make_body(scenario.body), scenario.contact, law);
+ScenarioRun run_scenario(const Scenario& scenario, const std::filesystem::path& out_dir, Observer* progress,
+                         const std::atomic<bool>* cancel) {
+  const auto law = friction::make_law(scenario.law);
+  const BodyOnPlane sys(scenario.body, scenario.contact, *law);
   const StateVector x0 = initial_state(scenario);
   (void)sys.contact_state(x0);  // the law must accept the initial state: fail before writing
 
@@ -47,10 +50,9 @@ ScenarioRun run_scenario(const Scenario& scenario, const friction::FrictionLaw& 
   ScenarioRun run;
   run.trajectory_csv = out_dir / "trajectory.csv";
   run.summary_json = out_dir / "summary.json";
-  {
-    std::ofstream toml = open_for_writing(out_dir / "scenario.toml");
-    toml << "# " << scenario.source << " after overrides; law = " << law.name() << "\n" << scenario.resolved_toml << "\n";
-  }
+  support::write_file_atomically(out_dir / "scenario.toml", "# " + support::one_line(scenario.source) +
+                                                                " resolved; rerun: frictionlab simulate scenario.toml\n" +
+                                                                scenario.resolved_toml + "\n");
   std::ofstream csv = open_for_writing(run.trajectory_csv);
   TrajectoryCsv writer(csv);
   Tee tee(writer, progress);
@@ -58,10 +60,8 @@ ScenarioRun run_scenario(const Scenario& scenario, const friction::FrictionLaw& 
   options.cancel = cancel;
   run.summary = simulate(sys, x0, options, &tee);
   csv.flush();
-
   if (!csv) throw std::runtime_error("writing the output in '" + out_dir.string() + "' failed");
-  support::write_file_atomically(run.summary_json,
-                                 support::json_text(summary_json(scenario, sys.body(), law.name(), run.summary)));
+  support::write_file_atomically(run.summary_json, support::json_text(summary_json(scenario, run.summary)));
   return run;
 }
 

@@ -7,12 +7,13 @@ support::Json vec3(const Eigen::Vector3d& v) { return support::Json::array({v[0]
 
 }  // namespace
 
-support::Json summary_json(const Scenario& scenario, const Body& body, std::string_view law, const RunSummary& s) {
+support::Json summary_json(const Scenario& scenario, const RunSummary& s) {
+  const Body& body = scenario.body;
   const double weight = body.mass * scenario.contact.g;
   const StateVector& x = s.x_final;
   support::Json j;
   j["scenario"] = {{"name", scenario.name}, {"source", scenario.source}, {"overrides", scenario.overrides}};
-  j["law"] = law;
+  j["law"] = scenario.law;
   j["termination"] = {{"reason", to_string(s.reason)}, {"message", s.message}};
   j["final_time"] = s.t_final;
   j["t_end"] = scenario.run.t_end;
@@ -34,7 +35,7 @@ support::Json summary_json(const Scenario& scenario, const Body& body, std::stri
                       {"omega", vec3(angular_velocity(x))},
                       {"v", vec3(velocity(x))},
                       {"eps", height(x)}};
-  j["body"] = {{"profile", scenario.body.preset.empty() ? std::string("chi2") : scenario.body.preset},
+  j["body"] = {{"profile", scenario.body_spec.preset.empty() ? std::string("chi2") : scenario.body_spec.preset},
                {"chi2", body.profile.chi2().coefficients()},
                {"z_lo", body.profile.z_lo()},
                {"z_hi", body.profile.z_hi()},

@@ -15,7 +15,6 @@
 #include "dynamics/cli/commands.h"
 #include "dynamics/scenario.h"
 #include "dynamics/scenario_run.h"
-#include "friction/registry.h"
 #include "friction/support/interrupt_guard.h"
 
 namespace frictionlab::cli {
@@ -66,7 +65,6 @@ void run(const SimulateOptions& opt) {
   std::vector<std::string> overrides = opt.set;
   if (!opt.law.empty()) overrides.push_back("contact.law=" + opt.law);
   const dynamics::Scenario scenario = dynamics::load_scenario(opt.scenario, overrides);
-  const auto law = friction::make_law(scenario.law);
 
   std::unique_ptr<ProgressBar> bar;
   if (isatty(STDERR_FILENO)) bar = std::make_unique<ProgressBar>(scenario.run.t_end);
@@ -74,7 +72,7 @@ void run(const SimulateOptions& opt) {
   {
     // Ctrl-C, kill or a lost terminal: stop between steps and still write the summary.
     const support::InterruptGuard interrupts;
-    result = dynamics::run_scenario(scenario, *law, opt.out, bar.get(), &interrupts.flag());
+    result = dynamics::run_scenario(scenario, opt.out, bar.get(), &interrupts.flag());
   }
   bar.reset();
 

@@ -9,9 +9,7 @@
 #include "dynamics/paper/figure_data.h"
 #include "dynamics/paper/run_series.h"
 #include "dynamics/body.h"
-#include "dynamics/scenario.h"
 #include "dynamics/scenario_run.h"
-#include "friction/registry.h"
 #include "friction/support/checked_output.h"
 #include "friction/support/number_format.h"
 
@@ -23,16 +21,16 @@ constexpr std::size_t kMaxReserve = 1'000'000;
 
 void run_one(RunResult& r, const RunnerOptions& options, std::atomic<double>* progress_t) {
   const RunSpec& spec = r.spec;
-  const Scenario scenario = load_scenario(spec.scenario_file, spec.overrides);
-  const auto law = friction::make_law(spec.law);
+  if (!spec.scenario) throw std::invalid_argument("run " + r.name() + " has no scenario (plan it with plan_runs)");
+  const Scenario& scenario = *spec.scenario;
   r.weight = scenario.body.mass * scenario.contact.g;
   r.t_end = scenario.run.t_end;
-  const Body body = make_body(scenario.body);
+  const Body& body = scenario.body;
   r.low_pole = body.com - body.profile.z_lo() <= body.profile.z_hi() - body.com ? 1 : -1;
   SeriesRecorder recorder(r.weight, progress_t);
   recorder.series().reserve(
       std::min<std::size_t>(kMaxReserve, static_cast<std::size_t>(scenario.run.t_end / scenario.run.output_dt) + 2));
-  const ScenarioRun run = run_scenario(scenario, *law, spec.out_dir, &recorder, options.cancel);
+  const ScenarioRun run = run_scenario(scenario, spec.out_dir, &recorder, options.cancel);
   r.summary = run.summary;
   r.executed = true;
 
@@ -96,14 +94,7 @@ std::vector<RunResult> run_experiments(const std::vector<RunSpec>& specs, const 
         r.error = "skipped (interrupted before it started)";
         continue;
       }
-      if (options.progress) {
-        double t_end = 0.0;
-        try {
-          t_end = load_scenario(r.spec.scenario_file, r.spec.overrides).run.t_end;
-        } catch (const std::exception&) {
-        }
-        options.progress->started(slot, r.name(), t_end);
-      }
+      if (options.progress) options.progress->started(slot, r.name(), r.spec.scenario ? r.spec.scenario->run.t_end : 0.0);
       try {
         run_one(r, options, progress_t);
       } catch (const std::exception& e) {

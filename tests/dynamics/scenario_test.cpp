@@ -44,8 +44,8 @@ std::string replace(std::string text, const std::string& from, const std::string
 TEST(DynScenario, ParsesAGoodScenarioWithDefaults) {
   const Scenario s = parse_scenario(kGood, "test.toml");
   EXPECT_EQ(s.name, "test");
-  EXPECT_EQ(s.body.preset, "sphere");
-  EXPECT_EQ(*s.body.radius, 0.05);
+  EXPECT_EQ(s.body_spec.preset, "sphere");
+  EXPECT_EQ(*s.body_spec.radius, 0.05);
   EXPECT_EQ(s.contact.g, 9.81);
   EXPECT_EQ(s.law, "exact");
   EXPECT_EQ(s.run.integrator.method, "rk8pd");
@@ -67,6 +67,51 @@ TEST(DynScenario, OverridesUseTheSameKeyPaths) {
   EXPECT_EQ(s.body.mass, 2.5);
   EXPECT_EQ(s.initial.eps, -1e-4);
   EXPECT_EQ(s.overrides.size(), 6u);
+}
+
+// The body is built once, when the scenario is resolved, and travels with it.
+TEST(DynScenario, CarriesItsBuiltBody) {
+  const Scenario s = parse_scenario(kGood, "test.toml");
+  constexpr double kMass = 1.0, kRadius = 0.05;
+  EXPECT_EQ(s.body.mass, kMass);
+  EXPECT_NEAR(s.body.A, 0.4 * kMass * kRadius * kRadius, 1e-15);  // solid sphere: 2/5 m R^2
+  EXPECT_NEAR(s.body.C, 0.4 * kMass * kRadius * kRadius, 1e-15);
+  EXPECT_NEAR(s.body.profile.z_hi() - s.body.profile.z_lo(), 2.0 * kRadius, 1e-15);
+}
+
+// A file is parsed once; each run resolves its own overrides from the parsed document.
+TEST(DynScenario, ADocumentIsParsedOnceAndResolvedPerRun) {
+  const ScenarioDocument doc = ScenarioDocument::parse(kGood, "test.toml");
+  const Scenario plain = doc.resolve();
+  const Scenario printed = doc.resolve({"contact.law=pade-printed", "run.t_end=0.5"});
+  EXPECT_EQ(plain.law, "exact");
+  EXPECT_EQ(plain.run.t_end, 2.0);
+  EXPECT_TRUE(plain.overrides.empty());
+  EXPECT_EQ(printed.law, "pade-printed");
+  EXPECT_EQ(printed.run.t_end, 0.5);
+  EXPECT_EQ(printed.overrides.size(), 2u);
+  EXPECT_EQ(doc.resolve().run.t_end, 2.0);  // overrides apply to a copy
+}
+
+// scenario.toml, written beside a run, is the resolved scenario: read back from any file name it
+// gives the same name, law and values (numbers to the last bit), with no overrides left to apply.
+TEST(DynScenario, TheResolvedTomlReadsBackAsTheSameScenario) {
+  const std::string no_name = replace(kGood, "name = \"test\"", "");
+  const Scenario s = parse_scenario(no_name, "data/sphere-x.toml",
+                                    {"contact.law=pade-printed", "initial.v=[0.30000000000000004, 0, 1e-300]",
+                                     "run.t_end=0.1"});
+  ASSERT_EQ(s.name, "sphere-x");
+  const Scenario back = parse_scenario(s.resolved_toml, "out/scenario.toml");
+  EXPECT_EQ(back.name, "sphere-x");
+  EXPECT_EQ(back.law, "pade-printed");
+  EXPECT_EQ(back.initial.v.x(), 0.30000000000000004);
+  EXPECT_EQ(back.initial.v.z(), 1e-300);
+  EXPECT_EQ(back.initial.eps, s.initial.eps);
+  EXPECT_EQ(back.initial.gamma, s.initial.gamma);
+  EXPECT_EQ(back.run.t_end, 0.1);
+  EXPECT_EQ(back.resolved_toml, s.resolved_toml);
+  // The law is recorded even where the file left it to the default.
+  EXPECT_NE(parse_scenario(kGood, "t.toml").resolved_toml.find("law = 'exact'"), std::string::npos);
 }
 
 TEST(DynScenario, NormalisesGammaOrRejectsAVectorFarFromUnit) {
