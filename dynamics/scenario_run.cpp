@@ -1,7 +1,7 @@
 #include "dynamics/scenario_run.h"
 
-#include <fstream>
 #include <stdexcept>
+#include <system_error>
 
 #include "dynamics/equations_of_motion.h"
 #include "dynamics/summary_json.h"
@@ -31,10 +31,10 @@ class Tee final : public Observer {
   Observer* b_;
 };
 
-std::ofstream open_for_writing(const std::filesystem::path& p) {
-  std::ofstream out(p);
-  if (!out) throw std::runtime_error("cannot write '" + p.string() + "'");
-  return out;
+void create_folder(const std::filesystem::path& dir) {
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec) throw support::OutputError("cannot create the output folder '" + dir.string() + "': " + ec.message());
 }
 
 }  // namespace
@@ -46,22 +46,33 @@ ScenarioRun run_scenario(const Scenario& scenario, const std::filesystem::path& 
   const StateVector x0 = initial_state(scenario);
   (void)sys.contact_state(x0);  // the law must accept the initial state: fail before writing
 
-  std::filesystem::create_directories(out_dir);
+  create_folder(out_dir);
   ScenarioRun run;
   run.trajectory_csv = out_dir / "trajectory.csv";
   run.summary_json = out_dir / "summary.json";
   support::write_file_atomically(out_dir / "scenario.toml", "# " + support::one_line(scenario.source) +
                                                                 " resolved; rerun: frictionlab simulate scenario.toml\n" +
                                                                 scenario.resolved_toml + "\n");
-  std::ofstream csv = open_for_writing(run.trajectory_csv);
-  TrajectoryCsv writer(csv);
-  Tee tee(writer, progress);
+  TrajectoryCsv csv(run.trajectory_csv);
+  Tee tee(csv, progress);
   RunOptions options = scenario.run;
   options.cancel = cancel;
-  run.summary = simulate(sys, x0, options, &tee);
-  csv.flush();
-  if (!csv) throw std::runtime_error("writing the output in '" + out_dir.string() + "' failed");
-  support::write_file_atomically(run.summary_json, support::json_text(summary_json(scenario, run.summary)));
+  try {
+    run.summary = simulate(sys, x0, options, &tee);
+  } catch (const OutputFailure& e) {
+    // A simulation that does not stop on its own when its output fails (dynamics/observer.h)
+    // leaves no summary to write.
+    throw support::OutputError(std::string(e.what()) + "; the run stopped, no summary written");
+  }
+  try {
+    csv.close();
+  } catch (const OutputFailure& e) {
+    run.output_error = e.what();
+  }
+  support::Json summary = summary_json(scenario, run.summary);
+  summary["output"] = {{"trajectory_rows", csv.rows()},
+                       {"error", run.output_error.empty() ? support::Json(nullptr) : support::Json(run.output_error)}};
+  support::write_file_atomically(run.summary_json, support::json_text(summary));
   return run;
 }
 

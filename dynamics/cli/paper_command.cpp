@@ -72,7 +72,6 @@ void run(const PaperCliOptions& opt) {
   std::printf("paper: %zu runs (%d stopped early, %d not run), %zu figures in %.1f s; wrote %s\n",
               outcome.results.size(), early, outcome.not_run, outcome.figures.size(), outcome.wall_time,
               (std::filesystem::path(opt.out) / "experiments.md").c_str());
-  std::fflush(stdout);
   if (!opt.no_figures)
     for (const auto& e : outcome.figure_errors) std::fprintf(stderr, "frictionlab: paper: %s\n", e.c_str());
   if (outcome.interrupted) std::fprintf(stderr, "frictionlab: paper: interrupted; the report covers what ran\n");

@@ -15,7 +15,9 @@
 #include "dynamics/cli/commands.h"
 #include "dynamics/scenario.h"
 #include "dynamics/scenario_run.h"
+#include "friction/support/checked_output.h"
 #include "friction/support/interrupt_guard.h"
+#include "friction/support/number_format.h"
 
 namespace frictionlab::cli {
 namespace {
@@ -78,10 +80,12 @@ void run(const SimulateOptions& opt) {
 
   const dynamics::RunSummary& s = result.summary;
   const std::string reason(dynamics::to_string(s.reason));
+  if (!result.output_error.empty())
+    throw support::OutputError(result.output_error + "; the run stopped at t = " + support::message_number(s.t_final) +
+                               " s (" + reason + "), see " + result.summary_json.string());
   std::printf("%s: %s at t = %.6g s; %ld steps, %ld RHS calls, %.3g s wall; wrote %s, %s\n",
               scenario.name.c_str(), reason.c_str(), s.t_final, s.steps, s.rhs_calls, s.wall_time,
               result.trajectory_csv.c_str(), result.summary_json.c_str());
-  std::fflush(stdout);
   const bool normal = s.reason == dynamics::Termination::t_end || s.reason == dynamics::Termination::rest ||
                       s.reason == dynamics::Termination::rolling;
   if (!normal) {

@@ -33,6 +33,7 @@ void run_one(RunResult& r, const RunnerOptions& options, std::atomic<double>* pr
   const ScenarioRun run = run_scenario(scenario, spec.out_dir, &recorder, options.cancel);
   r.summary = run.summary;
   r.executed = true;
+  if (!run.output_error.empty()) r.error = run.output_error;  // its trajectory is incomplete
 
   RunSeries& s = recorder.series();
   r.features = extract_features(s, r.thresholds);

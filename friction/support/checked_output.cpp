@@ -3,6 +3,7 @@
 #include <fcntl.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cerrno>
 #include <cstdio>
@@ -15,19 +16,26 @@ namespace {
 
 std::string reason(int error_number) { return error_number != 0 ? std::strerror(error_number) : "unknown error"; }
 
-// Writes all of [data, data + size) to fd, retrying after signals. Returns 0 or the errno.
-int write_all(int fd, const char* data, std::size_t size) {
-  while (size > 0) {
-    const ssize_t n = ::write(fd, data, size);
+// Writes all of [data, data + size) to fd, retrying after signals. Returns 0 or the errno;
+// `done` (if given) receives the bytes that were written.
+int write_all(int fd, const char* data, std::size_t size, std::size_t* done = nullptr) {
+  std::size_t written = 0;
+  int error_number = 0;
+  while (written < size) {
+    const ssize_t n = ::write(fd, data + written, size - written);
     if (n < 0) {
       if (errno == EINTR) continue;
-      return errno;
+      error_number = errno;
+      break;
     }
-    if (n == 0) return EIO;  // a regular file never accepts nothing without an error
-    data += n;
-    size -= static_cast<std::size_t>(n);
+    if (n == 0) {
+      error_number = EIO;  // a file never accepts nothing without an error
+      break;
+    }
+    written += static_cast<std::size_t>(n);
   }
-  return 0;
+  if (done) *done = written;
+  return error_number;
 }
 
 }  // namespace
@@ -62,20 +70,26 @@ void RecordFile::append(std::string_view record) {
   if (fd_ < 0) throw OutputError("'" + path_.string() + "' is already closed");
   if (!buffer_.empty() && buffer_.size() + record.size() > capacity_) flush();
   buffer_.append(record);
+  record_ends_.push_back(buffer_.size());
 }
 
 void RecordFile::flush() {
   throw_if_failed();
   if (fd_ < 0 || buffer_.empty()) return;
-  const int error_number = write_all(fd_, buffer_.data(), buffer_.size());
+  std::size_t done = 0;
+  const int error_number = write_all(fd_, buffer_.data(), buffer_.size(), &done);
   if (error_number != 0) {
-    // Part of the buffer may have reached the file: cut it back to the last whole record.
+    // Part of the buffer may have reached the file: keep the whole records among it, cut the rest.
+    const auto whole = std::upper_bound(record_ends_.begin(), record_ends_.end(), done);
+    written_ += whole == record_ends_.begin() ? 0 : *(whole - 1);
     (void)::ftruncate(fd_, static_cast<off_t>(written_));
     buffer_.clear();
+    record_ends_.clear();
     fail("writing", error_number);
   }
   written_ += buffer_.size();
   buffer_.clear();
+  record_ends_.clear();
 }
 
 void RecordFile::close() {

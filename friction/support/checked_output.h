@@ -15,6 +15,7 @@
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace frictionlab::support {
 
@@ -24,9 +25,10 @@ class OutputError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-/// A file written as a sequence of whole records. Records are buffered and handed to the system
-/// only whole; if a write fails the file is cut back to the end of the last whole record and the
-/// file stays failed (every later call throws the same OutputError). Not thread-safe.
+/// A file written as a sequence of whole records. Records are buffered; if a write fails (part of
+/// the buffer may have reached the file) the file is cut back to the end of the last whole record
+/// that reached it, and it stays failed (every later call throws the same OutputError). Not
+/// thread-safe.
 class RecordFile {
  public:
   /// Creates or truncates `path`. Throws OutputError if it cannot be opened for writing.
@@ -57,6 +59,7 @@ class RecordFile {
   std::filesystem::path path_;
   int fd_ = -1;
   std::string buffer_;
+  std::vector<std::size_t> record_ends_;  // end of each record in buffer_
   std::size_t capacity_;
   std::uint64_t written_ = 0;
   std::string failure_;

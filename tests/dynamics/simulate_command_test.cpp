@@ -3,7 +3,9 @@
 #include <gtest/gtest.h>
 
 #include <csignal>
+#include <algorithm>
 #include <filesystem>
+#include <sstream>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -48,6 +50,94 @@ TEST(DynSimulateCommand, BadInputGivesOneLineAndNonZeroExit) {
     EXPECT_TRUE(r.out.empty()) << r.out;
   }
   EXPECT_FALSE(std::filesystem::exists(dir / "summary.json"));
+}
+
+// Whole rows only: every line of the CSV ends in a newline and has every column.
+void expect_whole_rows(const std::string& csv) {
+  ASSERT_FALSE(csv.empty());
+  EXPECT_EQ(csv.back(), '\n') << "the CSV ends in half a row";
+  std::istringstream lines(csv);
+  int n = 0;
+  for (std::string line; std::getline(lines, line); ++n)
+    ASSERT_EQ(std::count(line.begin(), line.end(), ','), 24) << "row " << n << ": " << line;
+}
+
+bool has_temporary_files(const std::filesystem::path& dir) {
+  for (const auto& entry : std::filesystem::directory_iterator(dir))
+    if (entry.path().filename().string().find(".tmp-") != std::string::npos) return true;
+  return false;
+}
+
+// A disk that fills up mid-run (here a file-size limit, as `ulimit -f` sets): the run stops at
+// once, the command says so on one line and exits 1, and what was written stays valid.
+TEST(DynSimulateCommand, AFileSizeLimitStopsTheRunWithOneErrorAndValidFiles) {
+  const auto dir = fresh_dir("fsize");
+  constexpr rlim_t kLimit = 20000;  // bytes: ~40 rows of the ~1000 the run would write
+  const auto r = testing::run_frictionlab_with_file_limit(
+      "simulate " + kScenarios + "sphere-spinning.toml --set run.t_end=1 --set run.output_dt=1e-3 --out " +
+          dir.string(),
+      kLimit);
+  EXPECT_EQ(r.signal, 0) << "killed by a signal";
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_EQ(r.err.rfind("frictionlab: error: ", 0), 0u) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_NE(r.err.find("trajectory.csv"), std::string::npos) << r.err;
+  EXPECT_EQ(r.out.find("wrote"), std::string::npos) << r.out;
+  const std::string csv = slurp(dir / "trajectory.csv");
+  EXPECT_LE(csv.size(), kLimit);
+  expect_whole_rows(csv);
+  // The summary, where the simulation reports the stop, says why.
+  if (std::filesystem::exists(dir / "summary.json")) {
+    const auto summary = nlohmann::json::parse(slurp(dir / "summary.json"), nullptr, false);
+    ASSERT_FALSE(summary.is_discarded());
+    EXPECT_EQ(summary["termination"]["reason"], "output-error");
+  }
+  EXPECT_FALSE(has_temporary_files(dir));
+  std::filesystem::remove_all(dir);
+}
+
+// The summary does not fit under the limit while the short trajectory does: no summary.json at
+// all (never half of one), an error naming it, exit 1.
+TEST(DynSimulateCommand, ASummaryThatCannotBeWrittenIsAnErrorAndLeavesNoPartialFile) {
+  const auto dir = fresh_dir("fsize_summary");
+  const auto r = testing::run_frictionlab_with_file_limit(
+      "simulate " + kScenarios + "sphere-spinning.toml --set run.t_end=0.01 --set run.output_dt=0.01 --out " +
+          dir.string(),
+      1000);  // bytes: the CSV (~570) and scenario.toml (~490) fit, the summary (~1600) does not
+  EXPECT_EQ(r.signal, 0) << "killed by a signal";
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_EQ(r.err.rfind("frictionlab: error: ", 0), 0u) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_NE(r.err.find("summary.json"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "summary.json"));
+  expect_whole_rows(slurp(dir / "trajectory.csv"));
+  EXPECT_FALSE(has_temporary_files(dir));
+  std::filesystem::remove_all(dir);
+}
+
+// A trajectory file that refuses every write (a link to /dev/full): an error naming it and why.
+TEST(DynSimulateCommand, ATrajectoryThatCannotBeWrittenStopsTheRun) {
+  const auto dir = fresh_dir("devfull");
+  std::filesystem::create_directories(dir);
+  std::filesystem::create_symlink("/dev/full", dir / "trajectory.csv");
+  const auto r = run_frictionlab("simulate " + kScenarios + "sphere-spinning.toml --set run.t_end=1 --out " +
+                                 dir.string());
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_NE(r.err.find("trajectory.csv"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("No space left on device"), std::string::npos) << r.err;
+  EXPECT_TRUE(r.out.empty()) << r.out;
+  std::filesystem::remove_all(dir);
+}
+
+// The line on stdout that cannot be written is an error too.
+TEST(DynSimulateCommand, StandardOutputThatCannotBeWrittenIsAnError) {
+  const auto dir = fresh_dir("stdout_full");
+  const auto r = run_frictionlab("simulate " + kScenarios + "sphere-spinning.toml --set run.t_end=0.01 --out " +
+                                 dir.string() + " >/dev/full");
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_EQ(r.err, "frictionlab: error: writing to standard output failed: No space left on device\n");
+  std::filesystem::remove_all(dir);
 }
 
 // A frictionless sphere slides for ever (k = 0: no rest, no rolling), so the run is still going
