@@ -162,6 +162,70 @@ TEST(DynScenario, EachBadScenarioGivesOneClearError) {
   }
 }
 
+// Values outside the physically meaningful ranges (docs/dynamics.md §7) are rejected when the
+// scenario is read, naming the key, instead of failing far away ("friction input U = inf").
+// One case per rule; kGood is a 5 cm, 1 kg sphere.
+TEST(DynScenario, ValuesOutsidePhysicalRangesNameTheirKey) {
+  const std::vector<BadCase> cases = {
+      {"tiny mass", kGood, {"body.mass=1e-300"}, "body.mass = 1e-300 is invalid: it must be within [1e-06, 1000000] kg"},
+      {"huge mass", kGood, {"body.mass=1e300"}, "body.mass = 1e+300 is invalid"},
+      {"tiny radius", kGood, {"body.radius=1e-300"}, "body.radius = 1e-300 is invalid"},
+      {"huge radius", kGood, {"body.radius=1e6"}, "body.radius = 1000000 is invalid"},
+      {"tiny semi-axis",
+       replace(kGood, "profile = \"sphere\"\nradius = 0.05", "profile = \"spheroid\"\nsemi_axes = [1e-9, 0.05]"),
+       {}, "body.semi_axes = [1e-09, 0.05] is invalid"},
+      {"tiny chi2 body", replace(kGood, "profile = \"sphere\"\nradius = 0.05", "chi2 = [1e-20, 0, -1]"), {},
+       "body.chi2 = [1e-20, 0, -1] is invalid"},
+      {"huge chi2 body", replace(kGood, "profile = \"sphere\"\nradius = 0.05", "chi2 = [1e8, 0, -1]"), {},
+       "body.chi2 = [100000000, 0, -1] is invalid"},
+      {"tiny A", kGood, {"body.A=1e-300", "body.C=1e-300"}, "body.A = 1e-300 is invalid"},
+      {"A beyond the body", kGood, {"body.A=1"}, "body.A = 1 is invalid"},  // > m r^2 = 0.0025
+      {"tiny C", kGood, {"body.C=1e-300"}, "body.C = 1e-300 is invalid"},
+      {"C beyond the body", kGood, {"body.A=0.002", "body.C=0.003"}, "body.C = 0.003 is invalid"},
+      {"huge friction", kGood, {"contact.k=1e300"}, "contact.k = 1e+300 is invalid: it must be within [0, 10]"},
+      {"huge stiffness", kGood, {"contact.lambda=1e300"}, "contact.lambda = 1e+300 is invalid"},
+      {"tiny stiffness", kGood, {"contact.lambda=1e-300"}, "contact.lambda = 1e-300 is invalid"},
+      {"too soft for the weight", kGood, {"contact.lambda=100"}, "contact.lambda = 100 is invalid: the static compression"},
+      {"huge gravity", kGood, {"contact.g=1e300"}, "contact.g = 1e+300 is invalid"},
+      {"negative gravity", kGood, {"contact.g=-9.81"}, "contact.g = -9.81 is invalid"},
+      {"huge spin", kGood, {"initial.omega=[0, 0, 1e300]"}, "initial.omega = [0, 0, 1e+300] is invalid"},
+      {"fast spin", kGood, {"initial.omega=[0, 0, 1e5]"}, "initial.omega = [0, 0, 100000] is invalid"},
+      {"huge speed", kGood, {"initial.v=[1e300, 0, 0]"}, "initial.v = [1e+300, 0, 0] is invalid"},
+      {"deep compression", kGood, {"initial.eps=-0.01"}, "initial.eps = -0.01 is invalid"},
+      {"far above", kGood, {"initial.eps=1e300"}, "initial.eps = 1e+300 is invalid"},
+  };
+  for (const auto& c : cases) {
+    const std::string e = error_of(c.text, c.overrides);
+    EXPECT_NE(e.find(c.expected), std::string::npos) << c.what << ": got '" << e << "'";
+    EXPECT_EQ(e.find('\n'), std::string::npos) << c.what << ": one line, got '" << e << "'";
+  }
+}
+
+// The limits let through what the model is meant for, up to the edges of the ranges.
+TEST(DynScenario, ValuesInsideThePhysicalRangesAreAccepted) {
+  for (const std::vector<std::string>& overrides : std::vector<std::vector<std::string>>{
+           {"body.mass=1e-6", "contact.lambda=1e6"},
+           {"body.radius=1e-4", "body.mass=1e-6", "contact.lambda=1e5"},
+           {"contact.k=0"},
+           {"contact.k=10"},
+           {"contact.g=0", "contact.lambda=1e-3", "initial.eps=0.01"},
+           {"initial.omega=[0, 0, 19000]"},  // surface at 950 m/s
+           {"initial.v=[999, 0, 0]"},
+           {"initial.eps=1000"}}) {
+    EXPECT_NO_THROW((void)parse_scenario(kGood, "test.toml", overrides)) << ::testing::PrintToString(overrides);
+  }
+}
+
+TEST(DynScenario, AFolderIsNotAScenarioFile) {
+  const std::filesystem::path dir = std::filesystem::path(FRICTIONLAB_SOURCE_DIR) / "data" / "scenarios";
+  try {
+    (void)load_scenario(dir);
+    ADD_FAILURE() << "a folder was read as a scenario";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("is a folder"), std::string::npos) << e.what();
+  }
+}
+
 TEST(DynScenario, ShippedScenariosAreValid) {
   const std::filesystem::path dir = std::filesystem::path(FRICTIONLAB_SOURCE_DIR) / "data" / "scenarios";
   int n = 0;
