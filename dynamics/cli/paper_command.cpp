@@ -15,6 +15,7 @@
 
 #include "dynamics/cli/commands.h"
 #include "dynamics/paper/experiment_job.h"
+#include "friction/support/errors.h"
 #include "friction/support/interrupt_guard.h"
 
 namespace frictionlab::cli {
@@ -51,7 +52,7 @@ void run(const PaperCliOptions& opt) {
   if (!opt.cases.empty()) job.plan.cases = paper::split_list(opt.cases, "--cases");
   job.plan.overrides = opt.set;
   job.plan.baseline = !opt.no_baseline;
-  if (opt.jobs < 0) throw std::invalid_argument("--jobs = " + std::to_string(opt.jobs) + " is invalid: it must be >= 0 (0: one per core)");
+  if (opt.jobs < 0) throw support::invalid_value("--jobs", static_cast<long long>(opt.jobs), "it must be >= 0 (0: one per core)");
   job.jobs = opt.jobs;
   job.figures = !opt.no_figures;
   job.log = stderr;

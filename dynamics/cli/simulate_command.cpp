@@ -1,21 +1,28 @@
 // `frictionlab simulate SCENARIO.toml [--law NAME] [--set key=value]... --out DIR`: one run of the
 // body-on-plane dynamics (docs/dynamics.md). Writes DIR/trajectory.csv, DIR/summary.json and
-// DIR/scenario.toml; prints one line on stdout. Exit code 0 when the run ends by t_end, rest or
-// rolling; 3 when it stops early (non-finite, law-error, integrator-failure, max-steps,
-// interrupted) — its outputs are still written and the summary says why.
+// DIR/scenario.toml; prints one line on stdout. Exit codes:
+//   0  the run ended by t_end, rest or rolling;
+//   3  it stopped early (non-finite, law-error, integrator-failure, max-steps, interrupted by
+//      SIGINT, SIGTERM or SIGHUP): its files are written and the summary says why;
+//   1  an error: bad input (nothing run), or an output that could not be written (the run stopped
+//      there; what was written is valid). One line on stderr.
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <iostream>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "dynamics/cli/commands.h"
 #include "dynamics/scenario.h"
 #include "dynamics/scenario_run.h"
+#include "friction/registry.h"
 #include "friction/support/checked_output.h"
+#include "friction/support/errors.h"
 #include "friction/support/interrupt_guard.h"
 #include "friction/support/number_format.h"
 
@@ -65,7 +72,15 @@ struct SimulateOptions {
 
 void run(const SimulateOptions& opt) {
   std::vector<std::string> overrides = opt.set;
-  if (!opt.law.empty()) overrides.push_back("contact.law=" + opt.law);
+  if (!opt.law.empty()) {
+    // The law goes into the scenario as an override; a wrong name is the option's fault.
+    try {
+      (void)friction::make_law(opt.law);
+    } catch (const std::invalid_argument& e) {
+      throw std::invalid_argument("--law " + opt.law + ": " + e.what());
+    }
+    overrides.push_back("contact.law=" + opt.law);
+  }
   const dynamics::Scenario scenario = dynamics::load_scenario(opt.scenario, overrides);
 
   std::unique_ptr<ProgressBar> bar;
@@ -90,7 +105,7 @@ void run(const SimulateOptions& opt) {
                       s.reason == dynamics::Termination::rolling;
   if (!normal) {
     std::fprintf(stderr, "frictionlab: simulate: the run stopped early (%s): %s\n", reason.c_str(),
-                 s.message.c_str());
+                 support::one_line(s.message).c_str());
     throw CLI::RuntimeError(kExitStoppedEarly);
   }
 }

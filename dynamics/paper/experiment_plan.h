@@ -1,5 +1,5 @@
 #pragma once
-// The grid of the paper's experiments (section 2 of Munitsyna (2013); model-notes §4): every
+// The grid of the paper's experiments (section 2 of Munitsyna (2013); docs/model.md): every
 // (egg reading x case x law) run that `frictionlab paper` makes, with its scenario file, its
 // overrides and its output directory. Names are checked here, before anything runs
 // (std::invalid_argument naming the value and the rule). docs/experiments.md describes the job.
@@ -14,7 +14,7 @@
 
 namespace frictionlab::dynamics::paper {
 
-/// The two readings of the paper's egg (model-notes §4; data/scenarios/<egg>-<case>.toml).
+/// The two readings of the paper's egg (docs/model.md; data/scenarios/<egg>-<case>.toml).
 [[nodiscard]] const std::vector<std::string>& known_eggs();
 /// The paper's initial conditions (a), (b), (c).
 [[nodiscard]] const std::vector<std::string>& known_cases();

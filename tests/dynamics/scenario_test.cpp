@@ -226,6 +226,24 @@ TEST(DynScenario, AFolderIsNotAScenarioFile) {
   }
 }
 
+// An error caused by an override is blamed on it; an error in the file, on the file.
+TEST(DynScenario, AnErrorIsBlamedOnWhatSetTheValue) {
+  EXPECT_EQ(error_of(kGood, {"run.t_end=abc"}).rfind("--set run.t_end=abc: run.t_end must be a number", 0), 0u)
+      << error_of(kGood, {"run.t_end=abc"});
+  EXPECT_EQ(error_of(kGood, {"run.t_end=3", "body.mass=1e-300"}).rfind("--set body.mass=1e-300: body.mass = 1e-300 is invalid", 0), 0u);
+  EXPECT_EQ(error_of(kGood, {"initial.omega=[0, 0, abc]"}).rfind("--set initial.omega=[0, 0, abc]: initial.omega", 0), 0u);
+  EXPECT_EQ(error_of(kGood, {"run.t_end=-1"}).rfind("--set run.t_end=-1: run.t_end = -1 is invalid", 0), 0u);
+  EXPECT_EQ(error_of(kGood, {"contact.law=fast"}).rfind("--set contact.law=fast: contact.law = 'fast' is invalid", 0), 0u);
+  EXPECT_EQ(error_of(kGood, {"run.tend=3"}).rfind("--set run.tend=3: unknown key run.tend", 0), 0u);
+  EXPECT_EQ(error_of(kGood, {"run.t_end.x=1"}).rfind("--set run.t_end.x=1: ", 0), 0u);
+  EXPECT_EQ(error_of(kGood, {"run.t_end"}).rfind("--set run.t_end: ", 0), 0u);
+  // The last override of a key is the one that counts.
+  EXPECT_EQ(error_of(kGood, {"run.t_end=abc", "run.t_end=-2"}).rfind("--set run.t_end=-2: ", 0), 0u);
+  // A bad value of the file stays the file's, whatever else is overridden.
+  const std::string e = error_of(replace(kGood, "k = 0.2", "k = -1"), {"run.t_end=3"});
+  EXPECT_EQ(e.rfind("test.toml: contact.k = -1 is invalid", 0), 0u) << e;
+}
+
 TEST(DynScenario, ShippedScenariosAreValid) {
   const std::filesystem::path dir = std::filesystem::path(FRICTIONLAB_SOURCE_DIR) / "data" / "scenarios";
   int n = 0;
