@@ -129,6 +129,15 @@ struct BadCase {
   const char* expected;
 };
 
+// Each case gives one line containing its expected text.
+void expect_errors(const std::vector<BadCase>& cases) {
+  for (const auto& c : cases) {
+    const std::string e = error_of(c.text, c.overrides);
+    EXPECT_NE(e.find(c.expected), std::string::npos) << c.what << ": got '" << e << "'";
+    EXPECT_EQ(e.find('\n'), std::string::npos) << c.what << ": one line, got '" << e << "'";
+  }
+}
+
 TEST(DynScenario, EachBadScenarioGivesOneClearError) {
   const std::vector<BadCase> cases = {
       {"unknown key", replace(kGood, "t_end = 2", "t_end = 2\nt_edn = 3"), {}, "unknown key run.t_edn"},
@@ -155,11 +164,7 @@ TEST(DynScenario, EachBadScenarioGivesOneClearError) {
       {"override without =", kGood, {"run.t_end"}, "must have the form key=value"},
       {"override into a value", kGood, {"run.t_end.x=1"}, "run.t_end is not a section"},
   };
-  for (const auto& c : cases) {
-    const std::string e = error_of(c.text, c.overrides);
-    EXPECT_NE(e.find(c.expected), std::string::npos) << c.what << ": got '" << e << "'";
-    EXPECT_EQ(e.find('\n'), std::string::npos) << c.what << ": one line, got '" << e << "'";
-  }
+  expect_errors(cases);
 }
 
 // Values outside the physically meaningful ranges (docs/dynamics.md §7) are rejected when the
@@ -194,11 +199,7 @@ TEST(DynScenario, ValuesOutsidePhysicalRangesNameTheirKey) {
       {"deep compression", kGood, {"initial.eps=-0.01"}, "initial.eps = -0.01 is invalid"},
       {"far above", kGood, {"initial.eps=1e300"}, "initial.eps = 1e+300 is invalid"},
   };
-  for (const auto& c : cases) {
-    const std::string e = error_of(c.text, c.overrides);
-    EXPECT_NE(e.find(c.expected), std::string::npos) << c.what << ": got '" << e << "'";
-    EXPECT_EQ(e.find('\n'), std::string::npos) << c.what << ": one line, got '" << e << "'";
-  }
+  expect_errors(cases);
 }
 
 // The limits let through what the model is meant for, up to the edges of the ranges.
