@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "dynamics/trajectory_csv.h"
+#include "friction/support/json.h"
 #include "friction/registry.h"
 
 namespace frictionlab::dynamics {
@@ -69,6 +70,9 @@ TEST(DynScenarioRun, WritesTrajectorySummaryAndResolvedScenario) {
   }
   EXPECT_EQ(rows, 11);  // t = 0, 0.01, ..., 0.1
 
+  const auto summary = support::Json::parse(slurp(run.summary_json));
+  EXPECT_EQ(summary["output"]["trajectory_rows"], rows);
+  EXPECT_TRUE(summary["output"]["error"].is_null());
   const std::string json = slurp(run.summary_json);
   for (const char* key : {"\"reason\": \"t_end\"", "\"final_time\": 0.1", "\"steps\":", "\"rhs_calls\":",
                           "\"wall_time_s\":", "\"liftoffs\": 0", "\"min_N_over_mg\":", "\"initial_energy\":",
@@ -109,6 +113,7 @@ TEST_P(DynScenarioRunReproduces, RerunningItsScenarioTomlGivesTheSameTrajectory)
   const Scenario again = load_scenario(first / "scenario.toml");
   EXPECT_EQ(again.law, GetParam());
   EXPECT_EQ(again.name, s.name);
+  EXPECT_EQ(support::Json::parse(slurp(a.summary_json))["law"], GetParam());
   const ScenarioRun b = run_scenario(again, second);
   EXPECT_EQ(a.summary.reason, b.summary.reason);
   EXPECT_GT(a.summary.steps, 10);
