@@ -4,9 +4,15 @@
 // and bad values are std::invalid_argument naming the key ("run.t_end", ...). Overrides
 // "key=value" (the command line's --set) use the same key paths and are applied before checking;
 // a value is read as TOML ("2", "1e-3", "[0, 0, 1]", "\"exact\"") or else taken as a bare string.
+//
+// A scenario, once resolved (file + overrides + law), is the one source of truth of a run: it
+// carries its built body and its law, and its `resolved_toml`, written beside the run as
+// scenario.toml, reads back as the same scenario (every number to the last bit), so that
+// rerunning it reproduces the run.
 
 #include <Eigen/Core>
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -27,25 +33,48 @@ struct InitialState {
 };
 
 struct Scenario {
-  std::string name;         ///< top-level `name`, or the file stem
+  std::string name;         ///< top-level `name`, or the stem of the file first read
   std::string description;  ///< top-level `description`
   std::string source;       ///< the file read (or the name given to parse_scenario)
   std::vector<std::string> overrides;  ///< the "key=value" overrides applied, in order
-  BodySpec body;
+  BodySpec body_spec;       ///< [body] as written
+  Body body;                ///< built from body_spec once, when the scenario was resolved
   PlaneContact contact;
-  std::string law = "exact";  ///< [contact] law: a registry name (friction/registry.h)
+  std::string law;          ///< [contact] law: a registry name (friction/registry.h), checked
   InitialState initial;
   RunOptions run;
-  std::string resolved_toml;  ///< the scenario after overrides, as TOML (written beside the output)
+  /// The scenario after overrides as TOML, with its name and law written out: what scenario.toml
+  /// beside a run contains.
+  std::string resolved_toml;
 };
 
 /// |gamma| may differ from 1 by at most this before normalisation (a typed-in unit vector with
 /// ~4 digits passes; a wrong vector does not).
 inline constexpr double kGammaUnitTolerance = 1e-3;
 
-/// Reads and checks a scenario file (and its overrides). The body is built once to check it.
+/// A scenario file read and parsed once. Each resolve() applies its overrides to a copy of the
+/// parsed text, checks every key and builds the body: one document serves many runs.
+class ScenarioDocument {
+ public:
+  /// Reads and parses a file; errors name it (and line:column for TOML syntax).
+  [[nodiscard]] static ScenarioDocument read(const std::filesystem::path& file);
+  /// Parses TOML text; `source` names it in messages and gives the default scenario name.
+  [[nodiscard]] static ScenarioDocument parse(std::string_view toml_text, const std::string& source);
+
+  /// The scenario with `overrides` applied, checked, its body built.
+  [[nodiscard]] Scenario resolve(const std::vector<std::string>& overrides = {}) const;
+  [[nodiscard]] const std::string& source() const { return source_; }
+
+ private:
+  struct Parsed;
+  ScenarioDocument(std::shared_ptr<const Parsed> parsed, std::string source);
+  std::shared_ptr<const Parsed> parsed_;
+  std::string source_;
+};
+
+/// ScenarioDocument::read(file).resolve(overrides).
 [[nodiscard]] Scenario load_scenario(const std::filesystem::path& file, const std::vector<std::string>& overrides = {});
-/// The same from TOML text; `source` names it in messages.
+/// ScenarioDocument::parse(toml_text, source).resolve(overrides).
 [[nodiscard]] Scenario parse_scenario(std::string_view toml_text, const std::string& source,
                                       const std::vector<std::string>& overrides = {});
 

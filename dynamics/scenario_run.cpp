@@ -1,11 +1,14 @@
 #include "dynamics/scenario_run.h"
 
-#include <fstream>
 #include <stdexcept>
+#include <system_error>
 
 #include "dynamics/equations_of_motion.h"
 #include "dynamics/summary_json.h"
 #include "dynamics/trajectory_csv.h"
+#include "friction/registry.h"
+#include "friction/support/checked_output.h"
+#include "friction/support/errors.h"
 
 namespace frictionlab::dynamics {
 namespace {
@@ -28,39 +31,44 @@ class Tee final : public Observer {
   Observer* b_;
 };
 
-std::ofstream open_for_writing(const std::filesystem::path& p) {
-  std::ofstream out(p);
-  if (!out) throw std::runtime_error("cannot write '" + p.string() + "'");
-  return out;
+void create_folder(const std::filesystem::path& dir) {
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec) throw support::OutputError("cannot create the output folder '" + dir.string() + "': " + ec.message());
 }
 
 }  // namespace
 
-ScenarioRun run_scenario(const Scenario& scenario, const friction::FrictionLaw& law,
-                         const std::filesystem::path& out_dir, Observer* progress, const std::atomic<bool>* cancel) {
-  const BodyOnPlane sys(make_body(scenario.body), scenario.contact, law);
+ScenarioRun run_scenario(const Scenario& scenario, const std::filesystem::path& out_dir, Observer* progress,
+                         const std::atomic<bool>* cancel) {
+  const auto law = friction::make_law(scenario.law);
+  const BodyOnPlane sys(scenario.body, scenario.contact, *law);
   const StateVector x0 = initial_state(scenario);
   (void)sys.contact_state(x0);  // the law must accept the initial state: fail before writing
 
-  std::filesystem::create_directories(out_dir);
+  create_folder(out_dir);
   ScenarioRun run;
   run.trajectory_csv = out_dir / "trajectory.csv";
   run.summary_json = out_dir / "summary.json";
-  {
-    std::ofstream toml = open_for_writing(out_dir / "scenario.toml");
-    toml << "# " << scenario.source << " after overrides; law = " << law.name() << "\n" << scenario.resolved_toml << "\n";
-  }
-  std::ofstream csv = open_for_writing(run.trajectory_csv);
-  TrajectoryCsv writer(csv);
-  Tee tee(writer, progress);
+  support::write_file_atomically(out_dir / "scenario.toml", "# " + support::one_line(scenario.source) +
+                                                                " resolved; rerun: frictionlab simulate scenario.toml\n" +
+                                                                scenario.resolved_toml + "\n");
+  TrajectoryCsv csv(run.trajectory_csv);
+  Tee tee(csv, progress);
   RunOptions options = scenario.run;
   options.cancel = cancel;
+  // A failing trajectory write stops the run with reason output-error (dynamics/observer.h).
   run.summary = simulate(sys, x0, options, &tee);
-  csv.flush();
-
-  std::ofstream json = open_for_writing(run.summary_json);
-  write_summary_json(json, scenario, sys.body(), law.name(), run.summary);
-  if (!csv || !json) throw std::runtime_error("writing the output in '" + out_dir.string() + "' failed");
+  if (run.summary.reason == Termination::output_error) run.output_error = run.summary.message;
+  try {
+    csv.close();
+  } catch (const OutputFailure& e) {
+    if (run.output_error.empty()) run.output_error = e.what();
+  }
+  support::Json summary = summary_json(scenario, run.summary);
+  summary["output"] = {{"trajectory_rows", csv.rows()},
+                       {"error", run.output_error.empty() ? support::Json(nullptr) : support::Json(run.output_error)}};
+  support::write_file_atomically(run.summary_json, support::json_text(summary));
   return run;
 }
 

@@ -1,7 +1,11 @@
 #pragma once
-// A scenario run end to end: build the body and the right-hand side, integrate, and write
-// DIR/trajectory.csv, DIR/summary.json and DIR/scenario.toml (the scenario after overrides).
-// The summary is written whatever the termination reason.
+// A scenario run end to end: make the scenario's law, the right-hand side from its body, integrate,
+// and write DIR/trajectory.csv, DIR/summary.json and DIR/scenario.toml (the resolved scenario:
+// rerunning it reproduces the run). The summary is written whatever the termination reason.
+//
+// Every write is checked. A trajectory row that cannot be written stops the run at once (reason
+// output-error; the CSV keeps its whole rows); the summary and scenario.toml are written to a
+// temporary file and renamed, so they are whole or absent.
 
 #include <atomic>
 #include <filesystem>
@@ -9,7 +13,6 @@
 #include "dynamics/observer.h"
 #include "dynamics/scenario.h"
 #include "dynamics/simulation.h"
-#include "friction/law.h"
 
 namespace frictionlab::dynamics {
 
@@ -17,14 +20,16 @@ struct ScenarioRun {
   RunSummary summary;
   std::filesystem::path trajectory_csv;
   std::filesystem::path summary_json;
+  /// Why trajectory.csv is incomplete (a write or its close failed), or empty. The summary was
+  /// written and says so too.
+  std::string output_error;
 };
 
-/// Runs `scenario` with `law` (the caller resolves the name; scenario.law is not consulted).
-/// `progress` (may be null) also receives every sample and step. Throws std::invalid_argument
-/// before writing anything if the initial state is rejected, std::runtime_error if DIR is not
-/// writable.
-[[nodiscard]] ScenarioRun run_scenario(const Scenario& scenario, const friction::FrictionLaw& law,
-                                       const std::filesystem::path& out_dir, Observer* progress = nullptr,
-                                       const std::atomic<bool>* cancel = nullptr);
+/// Runs `scenario` (its body, its law) into `out_dir`. `progress` (may be null) also receives
+/// every sample and step. Throws std::invalid_argument before writing anything if the initial
+/// state is rejected; support::OutputError (a std::runtime_error) if DIR, scenario.toml or
+/// summary.json cannot be written. A failed trajectory is not thrown: see `output_error`.
+[[nodiscard]] ScenarioRun run_scenario(const Scenario& scenario, const std::filesystem::path& out_dir,
+                                       Observer* progress = nullptr, const std::atomic<bool>* cancel = nullptr);
 
 }  // namespace frictionlab::dynamics

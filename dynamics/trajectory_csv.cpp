@@ -1,18 +1,12 @@
 #include "dynamics/trajectory_csv.h"
 
-#include <charconv>
-#include <system_error>
+#include "friction/support/number_format.h"
 
 namespace frictionlab::dynamics {
 namespace {
 
-// Rows between flushes: a run killed from outside loses at most this many rows.
-constexpr long kFlushEveryRows = 1000;
-
 void put(std::string& line, double x) {
-  char buf[32];
-  const auto r = std::to_chars(buf, buf + sizeof buf, x);
-  line.append(buf, r.ptr);
+  support::append_shortest(line, x);
   line.push_back(',');
 }
 
@@ -22,41 +16,52 @@ void put3(std::string& line, const Eigen::Vector3d& v) {
 
 }  // namespace
 
-TrajectoryCsv::TrajectoryCsv(std::ostream& out) : out_(out) {
+TrajectoryCsv::TrajectoryCsv(const std::filesystem::path& file) : file_(file) {
   std::string header;
   for (std::size_t i = 0; i < kTrajectoryColumns.size(); ++i) {
     header += kTrajectoryColumns[i];
     header += i + 1 < kTrajectoryColumns.size() ? ',' : '\n';
   }
-  out_ << header;
-  out_.flush();
+  file_.append(header);
+  line_.reserve(512);
 }
 
 void TrajectoryCsv::sample(const Sample& s) {
   const ContactState& c = s.contact;
-  std::string line;
-  line.reserve(512);
-  put(line, s.t);
-  put3(line, c.gamma);
-  put3(line, angular_velocity(s.x));
-  put3(line, velocity(s.x));
-  put(line, height(s.x));
-  put(line, c.N);
-  put(line, c.U);
-  put(line, c.Omega);
-  put(line, c.friction.F1);
-  put(line, c.friction.F2);
-  put(line, c.friction.M);
-  put(line, c.a);
-  put(line, c.b);
-  put(line, c.psi);
-  put(line, s.energy);
-  put(line, s.kinetic);
-  put(line, slide_work(s.x));
-  put(line, spin_work(s.x));
-  line += c.in_contact ? "1\n" : "0\n";
-  out_ << line;
-  if (++rows_ % kFlushEveryRows == 0) out_.flush();
+  line_.clear();
+  put(line_, s.t);
+  put3(line_, c.gamma);
+  put3(line_, angular_velocity(s.x));
+  put3(line_, velocity(s.x));
+  put(line_, height(s.x));
+  put(line_, c.N);
+  put(line_, c.U);
+  put(line_, c.Omega);
+  put(line_, c.friction.F1);
+  put(line_, c.friction.F2);
+  put(line_, c.friction.M);
+  put(line_, c.a);
+  put(line_, c.b);
+  put(line_, c.psi);
+  put(line_, s.energy);
+  put(line_, s.kinetic);
+  put(line_, slide_work(s.x));
+  put(line_, spin_work(s.x));
+  line_ += c.in_contact ? "1\n" : "0\n";
+  try {
+    file_.append(line_);
+  } catch (const support::OutputError& e) {
+    throw OutputFailure(e.what());
+  }
+  ++rows_;
+}
+
+void TrajectoryCsv::close() {
+  try {
+    file_.close();
+  } catch (const support::OutputError& e) {
+    throw OutputFailure(e.what());
+  }
 }
 
 }  // namespace frictionlab::dynamics

@@ -21,12 +21,18 @@
 //   in_contact 0/1    eps < 0
 //
 // Numbers are written in the shortest form that reads back to the same double.
+//
+// The file only ever holds whole rows: rows are buffered (support::RecordFile, 64 KiB, ~140 rows;
+// a process killed from outside loses at most those) and a write that fails is cut back to the
+// last whole row. A failed write throws OutputFailure, which stops the simulation; the writer
+// then stays failed.
 
 #include <array>
-#include <ostream>
+#include <filesystem>
 #include <string_view>
 
 #include "dynamics/observer.h"
+#include "friction/support/checked_output.h"
 
 namespace frictionlab::dynamics {
 
@@ -37,13 +43,20 @@ inline constexpr std::array<std::string_view, 25> kTrajectoryColumns = {
 
 class TrajectoryCsv final : public Observer {
  public:
-  /// Writes the header at once. The stream must outlive the writer.
-  explicit TrajectoryCsv(std::ostream& out);
+  /// Creates (or truncates) `file` and writes the header. Throws support::OutputError if the file
+  /// cannot be created.
+  explicit TrajectoryCsv(const std::filesystem::path& file);
+  /// Appends one row. Throws OutputFailure if the file cannot be written.
   void sample(const Sample& s) override;
-  [[nodiscard]] long rows() const { return rows_; }
+  /// Writes what is buffered and closes the file; throws OutputFailure if that fails.
+  void close();
+
+  [[nodiscard]] long rows() const { return rows_; }  ///< rows given (not all may have reached the file)
+  [[nodiscard]] const std::filesystem::path& path() const { return file_.path(); }
 
  private:
-  std::ostream& out_;
+  support::RecordFile file_;
+  std::string line_;
   long rows_ = 0;
 };
 

@@ -7,8 +7,6 @@
 #include <atomic>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
-#include <fstream>
 #include <limits>
 #include <mutex>
 #include <ostream>
@@ -18,6 +16,9 @@
 
 #include "bench/accuracy/report.h"
 #include "friction/registry.h"
+#include "friction/support/checked_output.h"
+#include "friction/support/gnuplot.h"
+#include "friction/support/number_format.h"
 
 namespace frictionlab::accuracy {
 namespace fs = std::filesystem;
@@ -44,22 +45,12 @@ int category(std::uint8_t bits) {
   return f2 && m ? kBothNegative : m ? kMNegative : f2 ? kF2Negative : kRegular;
 }
 
-std::string g(double x) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.4g", x);
-  return buf;
-}
+// Axis ranges, labels and plot coordinates: 4 significant digits.
+std::string g(double x) { return support::significant(x, 4); }
 
-std::string quote_shell(const std::string& s) {
-  std::string out = "'";
-  for (const char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return out + "'";
-}
-
-std::ofstream open(const fs::path& path) {
-  std::ofstream out(path);
-  if (!out) throw std::runtime_error("cannot write " + path.string());
-  return out;
+// Every script and data file is written whole or not at all (support/checked_output.h).
+void write_text(const fs::path& path, const std::ostringstream& text) {
+  support::write_file_atomically(path, text.str());
 }
 
 // Grid nodes nearest to `wanted`, without repeats, in grid order.
@@ -88,7 +79,7 @@ void script_head(std::ostream& gp, const std::string& terminal, const std::strin
   gp << "# " << name << ".png from " << name << ".dat, written by `frictionlab accuracy`.\n"
      << "# Redraw: cd into this folder, then `gnuplot " << name << ".gp`.\n"
      << terminal_line(terminal.empty() ? "pngcairo" : terminal, width, height) << '\n'
-     << "set output '" << name << ".png'\n"
+     << "set output " << support::gnuplot_quoted(name + ".png") << "\n"
      << "set encoding utf8\n";
 }
 
@@ -137,14 +128,15 @@ void write_heat(const StudyResult& study, const LawValues& law, const fs::path& 
                 const std::string& terminal, std::vector<fs::path>& scripts) {
   const auto mus = pick_mu(study.grid, {0.05, 0.5, 1.0});
   const std::string name = "heat_" + law.law;
-  open(plots / (name + ".dat")) << heat_data(study, law, mus);
-  auto gp = open(plots / (name + ".gp"));
+  support::write_file_atomically(plots / (name + ".dat"), heat_data(study, law, mus));
+  std::ostringstream gp;
   script_head(gp, terminal, name, 1500, 400 * static_cast<int>(mus.size()) + 60);
   const int lo = static_cast<int>(std::round(std::log10(kHeatFloor)));
   const int hi = static_cast<int>(std::round(std::log10(kHeatCeiling)));
-  gp << "set multiplot layout " << mus.size() << ",3 title \"" << law.law
-     << " against exact: |law − exact| (max over sign Ω); F1, F2 per kN, M per kNa; white: non-finite\" "
-        "font ',13'\n"
+  gp << "set multiplot layout " << mus.size() << ",3 title "
+     << support::gnuplot_quoted(law.law + " against exact: |law − exact| (max over sign Ω); F1, F2 per kN, "
+                                          "M per kNa; white: non-finite")
+     << " font ',13'\n"
      << "set xlabel 'log_{10} s,  s = U/(a|Ω|)'\nset ylabel 'ψ (deg)'\n"
      << "set xrange [" << g(std::log10(study.grid.s().front())) << ":" << g(std::log10(study.grid.s().back()))
      << "]\nset yrange [0:180]\nset ytics 0,45,180\n"
@@ -155,10 +147,12 @@ void write_heat(const StudyResult& study, const LawValues& law, const fs::path& 
   for (std::size_t k = 0; k < mus.size(); ++k) {
     for (int c = 0; c < 3; ++c) {
       gp << "set title '|Δ" << comp[c] << "|,  μ = " << g(study.grid.mu()[mus[k]]) << "'\n"
-         << "plot '" << name << ".dat' index " << k << " using 1:2:" << 3 + c << " with image notitle\n";
+         << "plot " << support::gnuplot_quoted(name + ".dat") << " index " << k << " using 1:2:" << 3 + c
+         << " with image notitle\n";
     }
   }
   gp << "unset multiplot\n";
+  write_text(plots / (name + ".gp"), gp);
   scripts.push_back(plots / (name + ".gp"));
 }
 
@@ -174,7 +168,7 @@ void write_singular(const StudyResult& study, const LawValues& law, const LawSum
   const auto mus = pick_mu(grid, {0.05, 0.1, 0.25, 0.5, 0.75, 0.95});
   const std::string name = "singular_" + law.law;
   {
-    auto d = open(plots / (name + ".dat"));
+    std::ostringstream d;
     d << "# log10(s)  psi_deg  category (0 regular, 1 F2 denominator < 0, 2 M denominator < 0, 3 both,"
          " 4 F1 denominator < 0, 5 |output| > " << kSingularMagnitude << " or non-finite at either sign)\n";
     for (std::size_t k = 0; k < mus.size(); ++k) {
@@ -189,8 +183,9 @@ void write_singular(const StudyResult& study, const LawValues& law, const LawSum
       }
       d << '\n';
     }
+    write_text(plots / (name + ".dat"), d);
   }
-  auto gp = open(plots / (name + ".gp"));
+  std::ostringstream gp;
   const std::size_t rows = (mus.size() + 2) / 3;
   script_head(gp, terminal, name, 1500, 430 * static_cast<int>(rows) + 60);
   gp << "set multiplot layout " << rows << ",3 title \"" << law.law << ": where it is singular"
@@ -208,9 +203,10 @@ void write_singular(const StudyResult& study, const LawValues& law, const LawSum
      << "set rmargin 9\n";
   for (std::size_t k = 0; k < mus.size(); ++k) {
     gp << "set title 'μ = " << g(grid.mu()[mus[k]]) << "'\n"
-       << "plot '" << name << ".dat' index " << k << " using 1:2:3 with image notitle\n";
+       << "plot " << support::gnuplot_quoted(name + ".dat") << " index " << k << " using 1:2:3 with image notitle\n";
   }
   gp << "unset multiplot\n";
+  write_text(plots / (name + ".gp"), gp);
   scripts.push_back(plots / (name + ".gp"));
 }
 
@@ -240,7 +236,7 @@ void write_curves(const StudyResult& study, const CurveCase& cc, const fs::path&
     }
   }
   {
-    auto d = open(plots / (name + ".dat"));
+    std::ostringstream d;
     d << "# mu = " << g(cc.mu) << ", psi = " << g(cc.psi * kDeg) << " deg; index 0: Omega < 0, index 1: Omega > 0\n"
       << "# columns: s, then F1/(kN) F2/(kN) M/(kNa) of each law:";
     for (const auto& n : names) d << ' ' << n;
@@ -258,8 +254,9 @@ void write_curves(const StudyResult& study, const CurveCase& cc, const fs::path&
       }
       d << "\n\n";
     }
+    write_text(plots / (name + ".dat"), d);
   }
-  auto gp = open(plots / (name + ".gp"));
+  std::ostringstream gp;
   script_head(gp, terminal, name, 1500, 950);
   gp << "set multiplot layout 2,3 title \"F1, F2, M against s at μ = " << g(cc.mu) << ", ψ = "
      << g(cc.psi * kDeg) << "° (top: Ω > 0, bottom: Ω < 0); the y range follows exact, curves that leave "
@@ -279,15 +276,16 @@ void write_curves(const StudyResult& study, const CurveCase& cc, const fs::path&
          << (c == 0 ? "set key\n" : "unset key\n") << "plot ";
       for (std::size_t j = 0; j < names.size(); ++j) {
         const std::size_t col = 2 + 3 * j + c;
-        gp << (j == 0 ? "" : ", \\\n     ") << "'" << name << ".dat' index " << isign << " using 1:" << col
-           << " with lines "
+        gp << (j == 0 ? "" : ", \\\n     ") << support::gnuplot_quoted(name + ".dat") << " index " << isign
+           << " using 1:" << col << " with lines "
            << (j == 0 ? "lc rgb 'black' lw 3" : "lw 2 dt " + std::to_string(1 + (j - 1) % 5) + " lc " + std::to_string(j))
-           << " title '" << names[j] << "'";
+           << " title " << support::gnuplot_quoted(names[j]);
       }
       gp << '\n';
     }
   }
   gp << "unset multiplot\n";
+  write_text(plots / (name + ".gp"), gp);
   scripts.push_back(plots / (name + ".gp"));
 }
 
@@ -299,9 +297,8 @@ std::vector<CurveCase> curve_cases() {
 }
 
 std::string detect_gnuplot_terminal() {
-  if (std::system("command -v gnuplot >/dev/null 2>&1") != 0) return "";
-  if (std::system("gnuplot -e 'set terminal pngcairo' </dev/null >/dev/null 2>&1") == 0) return "pngcairo";
-  if (std::system("gnuplot -e 'set terminal png' </dev/null >/dev/null 2>&1") == 0) return "png";
+  for (const char* terminal : {"pngcairo", "png"})
+    if (support::gnuplot_has_terminal(terminal)) return terminal;
   return "";
 }
 
@@ -333,16 +330,11 @@ PlotReport write_plots(const StudyResult& study, const fs::path& dir, const Plot
   const auto work = [&] {
     for (std::size_t k = next++; k < rep.scripts.size(); k = next++) {
       const fs::path& script = rep.scripts[k];
-      // gnuplot's messages go to NAME.log, kept only if it failed.
+      // gnuplot's messages go to NAME.log, kept only if it wrote any.
       fs::path png = script, log = script;
       png.replace_extension(".png");
       log.replace_extension(".log");
-      const std::string cmd = "cd " + quote_shell(plots.string()) + " && gnuplot " +
-                              quote_shell(script.filename().string()) + " >/dev/null 2>" +
-                              quote_shell(log.filename().string());
-      const bool ok = std::system(cmd.c_str()) == 0 && fs::exists(png);
-      std::error_code ec;
-      if (ok) fs::remove(log, ec);
+      const bool ok = support::run_gnuplot(plots, script.filename(), log.filename()).ok && fs::exists(png);
       const std::lock_guard lock(mutex);
       if (ok) {
         rep.figures.push_back(png);

@@ -1,5 +1,6 @@
-// `frictionlab accuracy`: the accuracy study of every friction law against `exact` (issue 4, §4).
-// A thin layer over bench/accuracy: parse the options, run the study, write the files and figures.
+// `frictionlab accuracy`: the accuracy study of every friction law against `exact`
+// (docs/accuracy.md). A thin layer over bench/accuracy: parse and check the options, run the
+// study, write the files and figures.
 
 #include <chrono>
 #include <filesystem>
@@ -14,26 +15,55 @@
 #include "bench/accuracy/report.h"
 #include "bench/accuracy/study.h"
 #include "dynamics/cli/commands.h"
+#include "friction/support/errors.h"
+#include "friction/support/number_format.h"
 
 namespace frictionlab::cli {
 namespace {
 
+// The largest grid (points over mu, psi, sign of Omega and s): each point keeps ~170 bytes per law
+// in memory, so this is ~2 GB, fifty times the default grid.
+constexpr long long kMaxGridPoints = 10'000'000;
+
+// Counts as typed (signed, so that -3 is an error rather than a huge unsigned number).
 struct AccuracyOptions {
   std::string out;
   std::vector<std::string> laws;
-  accuracy::GridSpec grid;
-  std::size_t threads = 0;
+  long long s_points = static_cast<long long>(accuracy::GridSpec{}.s_points);
+  long long mu_points = static_cast<long long>(accuracy::GridSpec{}.mu_points);
+  long long psi_points = static_cast<long long>(accuracy::GridSpec{}.psi_points);
+  long long threads = 0;
   bool no_plots = false;
   std::string command;  // as typed, for the provenance line of the tables
 };
 
+// The sign only: the grid checks what else a count needs (bench/accuracy/grid.h).
+std::size_t count(const char* option, long long value) {
+  if (value < 0) throw support::invalid_value(option, value, "a count must not be negative");
+  return static_cast<std::size_t>(value);
+}
+
+accuracy::GridSpec grid_of(const AccuracyOptions& opt) {
+  accuracy::GridSpec grid;
+  grid.s_points = count("--s-points", opt.s_points);
+  grid.mu_points = count("--mu-points", opt.mu_points);
+  grid.psi_points = count("--psi-points", opt.psi_points);
+  const long double points = static_cast<long double>(grid.s_points) * grid.mu_points * grid.psi_points * 2;
+  if (points > kMaxGridPoints)
+    throw std::invalid_argument("--s-points x --mu-points x --psi-points x 2 = " +
+                                support::message_number(static_cast<double>(points)) +
+                                " grid points is invalid: at most " + std::to_string(kMaxGridPoints) +
+                                " (each keeps ~170 bytes per law in memory)");
+  return grid;
+}
+
 void run(const AccuracyOptions& opt) {
   if (opt.out.empty()) throw std::invalid_argument("--out is empty: name the output folder");
-  const auto t0 = std::chrono::steady_clock::now();
   accuracy::StudyOptions so;
-  so.grid = opt.grid;
+  so.grid = grid_of(opt);
   so.laws = opt.laws;
-  so.threads = opt.threads;
+  so.threads = count("--threads", opt.threads);
+  const auto t0 = std::chrono::steady_clock::now();
   so.progress = &std::cerr;
   const auto study = accuracy::run_study(so);
 
@@ -64,11 +94,11 @@ void register_accuracy_command(CLI::App& app) {
                   "comma-separated laws to compare with exact (default: every registered law but exact "
                   "and exact-reference; exact-reference only on a small grid)")
       ->delimiter(',');
-  cmd->add_option("--s-points", opt->grid.s_points, "slip ratios, log-spaced over [1e-3, 1e3] (>= 2)")
+  cmd->add_option("--s-points", opt->s_points, "slip ratios, log-spaced over [1e-3, 1e3] (>= 2)")
       ->capture_default_str();
-  cmd->add_option("--mu-points", opt->grid.mu_points, "axis ratios b/a, evenly over [0.05, 1] (>= 2)")
+  cmd->add_option("--mu-points", opt->mu_points, "axis ratios b/a, evenly over [0.05, 1] (>= 2)")
       ->capture_default_str();
-  cmd->add_option("--psi-points", opt->grid.psi_points,
+  cmd->add_option("--psi-points", opt->psi_points,
                   "orientations, evenly over [0, pi] (odd, >= 3: 0, pi/2, pi are nodes)")
       ->capture_default_str();
   cmd->add_option("--threads", opt->threads, "worker threads (0: one per hardware thread)")
@@ -76,16 +106,16 @@ void register_accuracy_command(CLI::App& app) {
   cmd->add_flag("--no-plots", opt->no_plots, "write the gnuplot data and scripts but do not run gnuplot");
   cmd->callback([opt] {
     // The command as a reader can retype it (options left at their defaults are omitted).
-    const accuracy::GridSpec defaults;
+    const AccuracyOptions defaults;
     std::ostringstream line;
     line << "frictionlab accuracy --out " << opt->out;
     if (!opt->laws.empty()) {
       line << " --laws ";
       for (std::size_t i = 0; i < opt->laws.size(); ++i) line << (i ? "," : "") << opt->laws[i];
     }
-    if (opt->grid.s_points != defaults.s_points) line << " --s-points " << opt->grid.s_points;
-    if (opt->grid.mu_points != defaults.mu_points) line << " --mu-points " << opt->grid.mu_points;
-    if (opt->grid.psi_points != defaults.psi_points) line << " --psi-points " << opt->grid.psi_points;
+    if (opt->s_points != defaults.s_points) line << " --s-points " << opt->s_points;
+    if (opt->mu_points != defaults.mu_points) line << " --mu-points " << opt->mu_points;
+    if (opt->psi_points != defaults.psi_points) line << " --psi-points " << opt->psi_points;
     if (opt->no_plots) line << " --no-plots";
     opt->command = line.str();
     run(*opt);

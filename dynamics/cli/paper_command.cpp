@@ -8,8 +8,6 @@
 
 #include <unistd.h>
 
-#include <atomic>
-#include <csignal>
 #include <cstdio>
 #include <memory>
 #include <string>
@@ -17,14 +15,13 @@
 
 #include "dynamics/cli/commands.h"
 #include "dynamics/paper/experiment_job.h"
+#include "friction/support/errors.h"
+#include "friction/support/interrupt_guard.h"
 
 namespace frictionlab::cli {
 namespace {
 
 constexpr int kExitIncomplete = 3;
-
-std::atomic<bool> g_paper_interrupted{false};
-extern "C" void on_paper_signal(int) { g_paper_interrupted.store(true); }
 
 struct PaperCliOptions {
   std::string out;
@@ -55,27 +52,20 @@ void run(const PaperCliOptions& opt) {
   if (!opt.cases.empty()) job.plan.cases = paper::split_list(opt.cases, "--cases");
   job.plan.overrides = opt.set;
   job.plan.baseline = !opt.no_baseline;
-  if (opt.jobs < 0) throw std::invalid_argument("--jobs = " + std::to_string(opt.jobs) + " is invalid: it must be >= 0 (0: one per core)");
+  if (opt.jobs < 0) throw support::invalid_value("--jobs", static_cast<long long>(opt.jobs), "it must be >= 0 (0: one per core)");
   job.jobs = opt.jobs;
   job.figures = !opt.no_figures;
   job.log = stderr;
   job.live_status = isatty(STDERR_FILENO) != 0;
-  job.cancel = &g_paper_interrupted;
   job.command = opt.command;
 
-  g_paper_interrupted.store(false);
-  auto* previous_int = std::signal(SIGINT, on_paper_signal);
-  auto* previous_term = std::signal(SIGTERM, on_paper_signal);
   paper::JobOutcome outcome;
-  try {
+  {
+    // Ctrl-C, kill or a lost terminal: running runs stop between steps, the report covers them.
+    const support::InterruptGuard interrupts;
+    job.cancel = &interrupts.flag();
     outcome = paper::run_paper_job(job);
-  } catch (...) {
-    std::signal(SIGINT, previous_int);
-    std::signal(SIGTERM, previous_term);
-    throw;
   }
-  std::signal(SIGINT, previous_int);
-  std::signal(SIGTERM, previous_term);
 
   int early = 0;
   for (const auto& r : outcome.results)
@@ -83,7 +73,6 @@ void run(const PaperCliOptions& opt) {
   std::printf("paper: %zu runs (%d stopped early, %d not run), %zu figures in %.1f s; wrote %s\n",
               outcome.results.size(), early, outcome.not_run, outcome.figures.size(), outcome.wall_time,
               (std::filesystem::path(opt.out) / "experiments.md").c_str());
-  std::fflush(stdout);
   if (!opt.no_figures)
     for (const auto& e : outcome.figure_errors) std::fprintf(stderr, "frictionlab: paper: %s\n", e.c_str());
   if (outcome.interrupted) std::fprintf(stderr, "frictionlab: paper: interrupted; the report covers what ran\n");

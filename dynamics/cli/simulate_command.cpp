@@ -1,16 +1,19 @@
 // `frictionlab simulate SCENARIO.toml [--law NAME] [--set key=value]... --out DIR`: one run of the
 // body-on-plane dynamics (docs/dynamics.md). Writes DIR/trajectory.csv, DIR/summary.json and
-// DIR/scenario.toml; prints one line on stdout. Exit code 0 when the run ends by t_end, rest or
-// rolling; 3 when it stops early (non-finite, law-error, integrator-failure, max-steps,
-// interrupted) — its outputs are still written and the summary says why.
+// DIR/scenario.toml; prints one line on stdout. Exit codes:
+//   0  the run ended by t_end, rest or rolling;
+//   3  it stopped early (non-finite, law-error, integrator-failure, max-steps, interrupted by
+//      SIGINT, SIGTERM or SIGHUP): its files are written and the summary says why;
+//   1  an error: bad input (nothing run), or an output that could not be written (the run stopped
+//      there; what was written is valid). One line on stderr.
 
 #include <unistd.h>
 
-#include <atomic>
+#include <algorithm>
 #include <chrono>
-#include <csignal>
 #include <cstdio>
 #include <iostream>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -18,6 +21,10 @@
 #include "dynamics/scenario.h"
 #include "dynamics/scenario_run.h"
 #include "friction/registry.h"
+#include "friction/support/checked_output.h"
+#include "friction/support/errors.h"
+#include "friction/support/interrupt_guard.h"
+#include "friction/support/number_format.h"
 
 namespace frictionlab::cli {
 namespace {
@@ -25,9 +32,6 @@ namespace {
 constexpr int kExitStoppedEarly = 3;
 constexpr double kProgressRefreshSeconds = 0.1;
 constexpr int kProgressBarWidth = 40;
-
-std::atomic<bool> g_interrupted{false};
-extern "C" void on_signal(int) { g_interrupted.store(true); }
 
 // A one-line progress bar in simulated time, on stderr (only used when stderr is a terminal).
 class ProgressBar final : public dynamics::Observer {
@@ -68,41 +72,40 @@ struct SimulateOptions {
 
 void run(const SimulateOptions& opt) {
   std::vector<std::string> overrides = opt.set;
-  if (!opt.law.empty()) overrides.push_back("contact.law=" + opt.law);
+  if (!opt.law.empty()) {
+    // The law goes into the scenario as an override; a wrong name is the option's fault.
+    try {
+      (void)friction::make_law(opt.law);
+    } catch (const std::invalid_argument& e) {
+      throw std::invalid_argument("--law " + opt.law + ": " + e.what());
+    }
+    overrides.push_back("contact.law=" + opt.law);
+  }
   const dynamics::Scenario scenario = dynamics::load_scenario(opt.scenario, overrides);
-  const auto law = friction::make_law(scenario.law);
 
   std::unique_ptr<ProgressBar> bar;
   if (isatty(STDERR_FILENO)) bar = std::make_unique<ProgressBar>(scenario.run.t_end);
-  // Ctrl-C or kill: stop between steps and still write the summary (reason "interrupted").
-  g_interrupted.store(false);
-  auto* previous_int = std::signal(SIGINT, on_signal);
-  auto* previous_term = std::signal(SIGTERM, on_signal);
-  const auto restore = [&] {
-    std::signal(SIGINT, previous_int);
-    std::signal(SIGTERM, previous_term);
-  };
   dynamics::ScenarioRun result;
-  try {
-    result = dynamics::run_scenario(scenario, *law, opt.out, bar.get(), &g_interrupted);
-  } catch (...) {
-    restore();
-    throw;
+  {
+    // Ctrl-C, kill or a lost terminal: stop between steps and still write the summary.
+    const support::InterruptGuard interrupts;
+    result = dynamics::run_scenario(scenario, opt.out, bar.get(), &interrupts.flag());
   }
-  restore();
   bar.reset();
 
   const dynamics::RunSummary& s = result.summary;
   const std::string reason(dynamics::to_string(s.reason));
+  if (!result.output_error.empty())
+    throw support::OutputError(result.output_error + "; the run stopped at t = " + support::message_number(s.t_final) +
+                               " s (" + reason + "), see " + result.summary_json.string());
   std::printf("%s: %s at t = %.6g s; %ld steps, %ld RHS calls, %.3g s wall; wrote %s, %s\n",
               scenario.name.c_str(), reason.c_str(), s.t_final, s.steps, s.rhs_calls, s.wall_time,
               result.trajectory_csv.c_str(), result.summary_json.c_str());
-  std::fflush(stdout);
   const bool normal = s.reason == dynamics::Termination::t_end || s.reason == dynamics::Termination::rest ||
                       s.reason == dynamics::Termination::rolling;
   if (!normal) {
     std::fprintf(stderr, "frictionlab: simulate: the run stopped early (%s): %s\n", reason.c_str(),
-                 s.message.c_str());
+                 support::one_line(s.message).c_str());
     throw CLI::RuntimeError(kExitStoppedEarly);
   }
 }

@@ -10,7 +10,7 @@
 #include "dynamics/paper/experiment_report.h"
 #include "dynamics/paper/figure_scripts.h"
 #include "dynamics/paper/run_progress.h"
-#include "dynamics/scenario.h"
+#include "friction/support/number_format.h"
 
 namespace frictionlab::dynamics::paper {
 namespace {
@@ -22,22 +22,14 @@ std::string now_text() {
   return buf;
 }
 
-std::string short_num(double x) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.4g", x);
-  return buf;
-}
+std::string short_num(double x) { return support::significant(x, 4); }
 
 // "gamma3(0) = 0.97, omega(0) = (0, 0, 100) 1/s" from the scenario as run.
 std::string initial_description(const RunSpec& spec) {
-  try {
-    const Scenario s = load_scenario(spec.scenario_file, spec.overrides);
-    const auto& w = s.initial.omega;
-    return "γ_3(0) = " + short_num(s.initial.gamma.normalized()[2]) + ", ω(0) = (" +
-           short_num(w[0]) + ", " + short_num(w[1]) + ", " + short_num(w[2]) + ") 1/s";
-  } catch (const std::exception&) {
-    return "";
-  }
+  if (!spec.scenario) return "";
+  const auto& w = spec.scenario->initial.omega;
+  return "γ_3(0) = " + short_num(spec.scenario->initial.gamma[2]) + ", ω(0) = (" + short_num(w[0]) + ", " +
+         short_num(w[1]) + ", " + short_num(w[2]) + ") 1/s";
 }
 
 std::vector<FigureGroup> figure_groups(const std::vector<RunResult>& results) {

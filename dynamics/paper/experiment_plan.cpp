@@ -1,14 +1,12 @@
 #include "dynamics/paper/experiment_plan.h"
 
 #include <algorithm>
-#include <charconv>
-#include <cstdio>
 #include <set>
 #include <stdexcept>
 #include <system_error>
 
-#include "dynamics/scenario.h"
 #include "friction/registry.h"
+#include "friction/support/number_format.h"
 
 #ifndef FRICTIONLAB_SOURCE_DIR
 #define FRICTIONLAB_SOURCE_DIR "."
@@ -38,18 +36,8 @@ void check_names(const std::vector<std::string>& given, const std::vector<std::s
   }
 }
 
-std::string shortest(double x) {
-  char buf[32];
-  const auto r = std::to_chars(buf, buf + sizeof buf, x);
-  return std::string(buf, r.ptr);
-}
-
 // Three significant digits: 1e-9 * 0.1 is "1e-10", not "1.0000000000000002e-10".
-std::string tolerance(double x) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.3g", x);
-  return buf;
-}
+std::string tolerance(double x) { return support::significant(x, 3); }
 
 }  // namespace
 
@@ -113,7 +101,16 @@ std::filesystem::path default_scenario_dir() {
 
 std::vector<RunSpec> plan_runs(const PlanOptions& options) {
   options.validate();
-  const std::vector<std::string> paper_defaults = {"run.output_dt=" + shortest(kPaperOutputDt)};
+  for (const auto& o : options.overrides)
+    if (o.rfind("contact.law=", 0) == 0)
+      throw std::invalid_argument("--set " + o + ": the paper job sets the law of each run; choose laws with --laws");
+  const std::vector<std::string> paper_defaults = {"run.output_dt=" + support::shortest(kPaperOutputDt)};
+  // Each run's scenario: the group's document with the run's overrides and its law.
+  const auto resolve = [](const ScenarioDocument& doc, const RunSpec& r) {
+    std::vector<std::string> overrides = r.overrides;
+    overrides.push_back("contact.law=" + r.law);
+    return std::make_shared<const Scenario>(doc.resolve(overrides));
+  };
   std::vector<RunSpec> runs;
   for (const auto& egg : options.eggs) {
     for (const auto& c : options.cases) {
@@ -124,29 +121,30 @@ std::vector<RunSpec> plan_runs(const PlanOptions& options) {
       if (!std::filesystem::exists(base.scenario_file))
         throw std::invalid_argument("scenario file '" + base.scenario_file.string() +
                                     "' does not exist (--scenarios names the folder of <egg>-<case>.toml)");
+      const ScenarioDocument doc = ScenarioDocument::read(base.scenario_file);
       base.overrides = paper_defaults;
       base.overrides.insert(base.overrides.end(), options.overrides.begin(), options.overrides.end());
-      const Scenario checked = load_scenario(base.scenario_file, base.overrides);  // throws on a bad --set
       const std::filesystem::path group_dir = options.out_dir / "runs" / base.group();
+      std::shared_ptr<const Scenario> reference;
       for (const auto& law : options.laws) {
         RunSpec r = base;
         r.law = r.label = law;
         r.out_dir = group_dir / r.label;
+        r.scenario = resolve(doc, r);  // throws on a bad --set
+        if (law == kReferenceLaw) reference = r.scenario;
         runs.push_back(std::move(r));
       }
-      const bool has_reference =
-          std::find(options.laws.begin(), options.laws.end(), std::string(kReferenceLaw)) != options.laws.end();
-      if (options.baseline && has_reference) {
+      if (options.baseline && reference) {
         RunSpec r = base;
         r.law = std::string(kReferenceLaw);
         r.baseline = true;
-        const std::string abs_tol = tolerance(checked.run.integrator.abs_tol * kBaselineToleranceFactor);
-        const std::string rel_tol = tolerance(checked.run.integrator.rel_tol * kBaselineToleranceFactor);
+        const std::string abs_tol = tolerance(reference->run.integrator.abs_tol * kBaselineToleranceFactor);
+        const std::string rel_tol = tolerance(reference->run.integrator.rel_tol * kBaselineToleranceFactor);
         r.label = r.law + "-tol" + abs_tol;
         r.overrides.push_back("run.abs_tol=" + abs_tol);
         r.overrides.push_back("run.rel_tol=" + rel_tol);
-        (void)load_scenario(r.scenario_file, r.overrides);
         r.out_dir = group_dir / r.label;
+        r.scenario = resolve(doc, r);
         runs.push_back(std::move(r));
       }
     }

@@ -5,9 +5,12 @@
 // (std::invalid_argument naming the value and the rule). docs/experiments.md describes the job.
 
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <string_view>
 #include <vector>
+
+#include "dynamics/scenario.h"
 
 namespace frictionlab::dynamics::paper {
 
@@ -52,6 +55,9 @@ struct RunSpec {
   std::filesystem::path scenario_file;
   std::vector<std::string> overrides;  ///< paper defaults, then the user's, then the baseline's
   std::filesystem::path out_dir;       ///< DIR/runs/<egg>-<case>/<label>
+  /// What runs: the file with `overrides` and contact.law = `law`, resolved when planned (the file
+  /// is read once per group). Null only in a spec made by hand.
+  std::shared_ptr<const Scenario> scenario;
 
   [[nodiscard]] std::string group() const { return egg + "-" + case_id; }
 };
@@ -64,8 +70,9 @@ struct RunSpec {
 [[nodiscard]] std::filesystem::path default_scenario_dir();
 
 /// Every run, grouped by (egg, case) in the order given, laws in the order given, the baseline
-/// last in its group. Loads each scenario with its overrides (so a bad --set or a missing file is
-/// an error before anything runs) and resolves every law name.
+/// last in its group. Reads each scenario file once and resolves every run's scenario (so a bad
+/// --set or a missing file is an error before anything runs). The plan sets each run's law:
+/// an override of contact.law is an error (choose laws with --laws).
 [[nodiscard]] std::vector<RunSpec> plan_runs(const PlanOptions& options);
 
 }  // namespace frictionlab::dynamics::paper

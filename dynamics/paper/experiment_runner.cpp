@@ -2,8 +2,6 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cstdio>
-#include <fstream>
 #include <stdexcept>
 #include <thread>
 
@@ -11,9 +9,9 @@
 #include "dynamics/paper/figure_data.h"
 #include "dynamics/paper/run_series.h"
 #include "dynamics/body.h"
-#include "dynamics/scenario.h"
 #include "dynamics/scenario_run.h"
-#include "friction/registry.h"
+#include "friction/support/checked_output.h"
+#include "friction/support/number_format.h"
 
 namespace frictionlab::dynamics::paper {
 namespace {
@@ -21,40 +19,26 @@ namespace {
 // Samples to reserve at most (the recorder grows beyond if needed).
 constexpr std::size_t kMaxReserve = 1'000'000;
 
-std::string fixed(double x, int digits) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.*f", digits, x);
-  return buf;
-}
-
-std::string general(double x) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.4g", x);
-  return buf;
-}
-
 void run_one(RunResult& r, const RunnerOptions& options, std::atomic<double>* progress_t) {
   const RunSpec& spec = r.spec;
-  const Scenario scenario = load_scenario(spec.scenario_file, spec.overrides);
-  const auto law = friction::make_law(spec.law);
+  if (!spec.scenario) throw std::invalid_argument("run " + r.name() + " has no scenario (plan it with plan_runs)");
+  const Scenario& scenario = *spec.scenario;
   r.weight = scenario.body.mass * scenario.contact.g;
   r.t_end = scenario.run.t_end;
-  const Body body = make_body(scenario.body);
+  const Body& body = scenario.body;
   r.low_pole = body.com - body.profile.z_lo() <= body.profile.z_hi() - body.com ? 1 : -1;
   SeriesRecorder recorder(r.weight, progress_t);
   recorder.series().reserve(
       std::min<std::size_t>(kMaxReserve, static_cast<std::size_t>(scenario.run.t_end / scenario.run.output_dt) + 2));
-  const ScenarioRun run = run_scenario(scenario, *law, spec.out_dir, &recorder, options.cancel);
+  const ScenarioRun run = run_scenario(scenario, spec.out_dir, &recorder, options.cancel);
   r.summary = run.summary;
   r.executed = true;
+  if (!run.output_error.empty()) r.error = run.output_error;  // its trajectory is incomplete
 
   RunSeries& s = recorder.series();
   r.features = extract_features(s, r.thresholds);
-  {
-    std::ofstream json(spec.out_dir / "features.json");
-    write_features_json(json, r.features, r.thresholds);
-    if (!json) throw std::runtime_error("cannot write '" + (spec.out_dir / "features.json").string() + "'");
-  }
+  support::write_file_atomically(spec.out_dir / "features.json",
+                                 support::json_text(features_json(r.features, r.thresholds)));
   if (!options.plot_data_dir.empty())
     r.figure_ranges = write_figure_data(options.plot_data_dir, spec.group() + "-" + spec.label, s);
   r.gamma3_smooth = moving_average(s.t, s.gamma3, r.thresholds.smoothing_window);
@@ -81,8 +65,9 @@ int worker_count(int jobs) {
 
 std::string describe(const RunResult& r) {
   if (!r.executed) return "not run: " + r.error;
-  std::string out = std::string(to_string(r.summary.reason)) + " at t = " + general(r.summary.t_final) + " s, " +
-                    fixed(r.summary.wall_time, 2) + " s wall, " + std::to_string(r.summary.rhs_calls) + " RHS calls";
+  std::string out = std::string(to_string(r.summary.reason)) + " at t = " + support::significant(r.summary.t_final, 4) +
+                    " s, " + support::fixed(r.summary.wall_time, 2) + " s wall, " + std::to_string(r.summary.rhs_calls) +
+                    " RHS calls";
   if (!r.ended_normally() && !r.summary.message.empty()) out += " (" + r.summary.message + ")";
   if (!r.error.empty()) out += "; " + r.error;
   return out;
@@ -110,14 +95,7 @@ std::vector<RunResult> run_experiments(const std::vector<RunSpec>& specs, const 
         r.error = "skipped (interrupted before it started)";
         continue;
       }
-      if (options.progress) {
-        double t_end = 0.0;
-        try {
-          t_end = load_scenario(r.spec.scenario_file, r.spec.overrides).run.t_end;
-        } catch (const std::exception&) {
-        }
-        options.progress->started(slot, r.name(), t_end);
-      }
+      if (options.progress) options.progress->started(slot, r.name(), r.spec.scenario ? r.spec.scenario->run.t_end : 0.0);
       try {
         run_one(r, options, progress_t);
       } catch (const std::exception& e) {

@@ -3,14 +3,14 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
-#include <fstream>
 #include <map>
 #include <sstream>
 #include <stdexcept>
 
 #include "dynamics/paper/figure_data.h"
+#include "friction/support/checked_output.h"
+#include "friction/support/gnuplot.h"
+#include "friction/support/number_format.h"
 
 namespace frictionlab::dynamics::paper {
 namespace {
@@ -45,17 +45,7 @@ constexpr std::array<Panel, 6> kPanels = {{
     {FigureColumns::n_min, FigureColumns::n_max, FigureColumns::n_mean, EndColumns::n, "N/(m g)", Cap::n_over_mg, ""},
 }};
 
-std::string quoted(const std::string& s) {
-  std::string out = "'";
-  for (const char c : s) out += c == '\'' ? std::string("''") : std::string(1, c);
-  return out + "'";
-}
-
-std::string shell_quoted(const std::string& s) {
-  std::string out = "'";
-  for (const char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return out + "'";
-}
+using support::gnuplot_quoted;
 
 std::string title_of(const FigureRun& r) { return r.stopped_early ? r.label + " (" + r.note + ")" : r.label; }
 
@@ -84,11 +74,7 @@ double axis_top(const FigureGroup& g, Cap which, bool early) {
   return top > 0.0 ? kAxisHeadroom * top : 1.0;
 }
 
-std::string number(double x) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.4g", x);
-  return buf;
-}
+std::string number(double x) { return support::significant(x, 4); }
 
 // The plot command of one panel: per run a band (min-max per bin) and its mean line, and a cross
 // where an early-stopped run stopped.
@@ -97,28 +83,24 @@ std::string plot_command(const FigureGroup& g, const std::string& kind, int x_co
   std::string cmd = "plot ";
   for (std::size_t i = 0; i < g.runs.size(); ++i) {
     const FigureRun& r = g.runs[i];
-    const std::string colour = quoted(law_colour(r.label, i));
-    const std::string data = quoted("data/" + r.stem + "." + kind + ".dat");
+    const std::string colour = gnuplot_quoted(law_colour(r.label, i));
+    const std::string data = gnuplot_quoted("data/" + r.stem + "." + kind + ".dat");
     const std::string x = std::to_string(x_col);
     if (i > 0) cmd += ", \\\n     ";
     if (bands && !r.stopped_early)  // a run stopped at a pole has bins of ~1e9 N: no band
       cmd += data + " using " + x + ":" + std::to_string(lo) + ":" + std::to_string(hi) +
              " with filledcurves lc rgb " + colour + " notitle, \\\n     ";
     cmd += data + " using " + x + ":" + std::to_string(mean) + " with lines lw 1.1 lc rgb " + colour +
-           (with_titles ? " title " + quoted(title_of(r)) : " notitle");
+           (with_titles ? " title " + gnuplot_quoted(title_of(r)) : " notitle");
     if (r.stopped_early) {
-      cmd += ", \\\n     " + quoted("data/" + r.stem + ".end.dat") + " using " + std::to_string(end_x) + ":" +
+      cmd += ", \\\n     " + gnuplot_quoted("data/" + r.stem + ".end.dat") + " using " + std::to_string(end_x) + ":" +
              std::to_string(end_y) + " with points pt 2 ps 2.5 lw 2.5 lc rgb " + colour + " notitle";
     }
   }
   return cmd + "\n";
 }
 
-void write_file(const std::filesystem::path& p, const std::string& text) {
-  std::ofstream out(p);
-  out << text;
-  if (!out) throw std::runtime_error("cannot write '" + p.string() + "'");
-}
+void write_file(const std::filesystem::path& p, const std::string& text) { support::write_file_atomically(p, text); }
 
 std::string fig3(const FigureGroup& g, bool early) {
   const std::string kind = early ? "early" : "full";
@@ -128,11 +110,11 @@ std::string fig3(const FigureGroup& g, bool early) {
     << (early ? " (first seconds)" : "") << ".\n# Lines: the mean of each time bin (data/*." << kind << ".dat)"
     << (early ? "" : "; bands: its min-max") << "; the axes of |F|, |M|, a, N/(m g) end 15 % above the largest bin mean,\n"
     << "# cutting the bands of the bouncing phases. Regenerate: gnuplot " << stem << ".gp\n"
-    << kTerminal << "\nset output " << quoted(stem + ".png") << "\n"
+    << kTerminal << "\nset output " << gnuplot_quoted(stem + ".png") << "\n"
     << kBand << "\nset grid\nset xlabel 't (s)'\nset datafile missing 'NaN'\n";
   if (early) s << "set xrange [0:" << kEarlyWindow << "]\n";
   s << "set multiplot layout 3,2 margins 0.07,0.98,0.05,0.895 spacing 0.08,0.07 title "
-    << quoted(g.egg + ", case " + g.case_id + ": " + g.description +
+    << gnuplot_quoted(g.egg + ", case " + g.case_id + ": " + g.description +
               (early ? " (first " + std::to_string(static_cast<int>(kEarlyWindow)) + " s)" : ""))
     << " font ',13'\n";
   for (std::size_t p = 0; p < kPanels.size(); ++p) {
@@ -143,9 +125,9 @@ std::string fig3(const FigureGroup& g, bool early) {
       s << "unset key\n";
     }
     if (panel.cap == Cap::none) {
-      s << "set ylabel " << quoted(panel.label) << "\nset yrange " << panel.range << "\n";
+      s << "set ylabel " << gnuplot_quoted(panel.label) << "\nset yrange " << panel.range << "\n";
     } else {
-      s << "set ylabel " << quoted(std::string(panel.label)) << "\nset yrange [0:"
+      s << "set ylabel " << gnuplot_quoted(std::string(panel.label)) << "\nset yrange [0:"
         << number(axis_top(g, panel.cap, early)) << "]\n";
     }
     s << plot_command(g, kind, FigureColumns::t, panel.lo, panel.hi, panel.mean, EndColumns::t, panel.end, p == 0,
@@ -163,15 +145,15 @@ std::string fig2(const std::string& egg, const std::vector<const FigureGroup*>& 
        "(data/*.full.dat). Regenerate: gnuplot "
     << stem << ".gp\n"
     << "set encoding utf8\nset terminal png truecolor enhanced size 1800,620 font 'DejaVuSans,11'\nset output "
-    << quoted(stem + ".png")
+    << gnuplot_quoted(stem + ".png")
     << "\n"
     << kBand << "\nset grid\n"
     << "set logscale x\nset format x '10^{%T}'\nset xlabel '|ω|^2 (1/s^2), log scale; time runs right to left'\n"
     << "set ylabel 'γ_3 = cos(nutation angle)'\nset yrange [-1.05:1.05]\n"
     << "set multiplot layout 1," << groups.size() << " margins 0.05,0.98,0.13,0.76 spacing 0.05,0 title "
-    << quoted(egg + ": the paper's fig. 2") << " font ',13'\n";
+    << gnuplot_quoted(egg + ": the paper's fig. 2") << " font ',13'\n";
   for (const FigureGroup* g : groups) {
-    s << "set title " << quoted("case " + g->case_id + ": " + g->description) << "\n";
+    s << "set title " << gnuplot_quoted("case " + g->case_id + ": " + g->description) << "\n";
     if (g == groups.front()) {
       s << "set key at screen 0.5,0.9 center top vertical font ',10' samplen 2 spacing 0.9\n";
     } else {
@@ -224,22 +206,14 @@ std::vector<std::string> write_figure_scripts(const std::filesystem::path& plots
 
 std::vector<std::string> render_figures(const std::filesystem::path& plots_dir, const std::vector<std::string>& scripts) {
   std::vector<std::string> errors;
-  if (std::system("command -v gnuplot >/dev/null 2>&1") != 0) {
-    errors.push_back("gnuplot not found: no PNG drawn (the scripts are in " + plots_dir.string() +
-                     "; install gnuplot-nox and run them there)");
-    return errors;
-  }
   for (const auto& script : scripts) {
-    const std::filesystem::path log = plots_dir / (std::filesystem::path(script).stem().string() + ".log");
-    const std::string cmd = "cd " + shell_quoted(plots_dir.string()) + " && gnuplot " + shell_quoted(script) + " > " +
-                            shell_quoted(log.filename().string()) + " 2>&1";
-    const int status = std::system(cmd.c_str());
-    if (status != 0) {
-      errors.push_back("gnuplot failed on " + (plots_dir / script).string() + " (see " + log.string() + ")");
-    } else {
-      std::error_code ec;
-      if (std::filesystem::file_size(log, ec) == 0) std::filesystem::remove(log, ec);
+    const support::GnuplotRun run =
+        support::run_gnuplot(plots_dir, script, std::filesystem::path(script).stem().string() + ".log");
+    if (!run.found) {
+      errors.push_back(run.message + ": no PNG drawn (the scripts are in " + plots_dir.string() + ")");
+      break;
     }
+    if (!run.ok) errors.push_back(run.message);
   }
   return errors;
 }

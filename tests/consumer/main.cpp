@@ -70,7 +70,7 @@ void check_sliding_sphere() {
   const std::filesystem::path file = std::filesystem::path(FRICTIONLAB_SCENARIO_DIR) / "sphere-sliding.toml";
   const dyn::Scenario s = dyn::load_scenario(file);
   const auto law = fl::friction::make_law(s.law);
-  const dyn::BodyOnPlane sys(dyn::make_body(s.body), s.contact, *law);
+  const dyn::BodyOnPlane sys(s.body, s.contact, *law);  // the scenario carries its built body
   const dyn::RunSummary r = dyn::simulate(sys, dyn::initial_state(s), s.run);
   const bool rolled = r.reason == dyn::Termination::rolling;
   std::printf("%s %s stopped with reason '%s' (expected 'rolling') %s\n", rolled ? "ok  " : "FAIL",
@@ -80,7 +80,7 @@ void check_sliding_sphere() {
   const double v0 = s.initial.v.norm();
   const double k = s.contact.k;
   const double g = s.contact.g;
-  const double R = s.body.radius.value();
+  const double R = s.body_spec.radius.value();
   check_near("sphere: t at rolling", r.t_final, 2.0 * v0 / (7.0 * k * g), kRollTimeTol);
   check_near("sphere: |v| at rolling", dyn::velocity(r.x_final).norm(), 5.0 * v0 / 7.0, kRollSpeedTol);
   check_near("sphere: |omega| R at rolling", dyn::angular_velocity(r.x_final).norm() * R, 5.0 * v0 / 7.0,

@@ -44,8 +44,8 @@ std::string replace(std::string text, const std::string& from, const std::string
 TEST(DynScenario, ParsesAGoodScenarioWithDefaults) {
   const Scenario s = parse_scenario(kGood, "test.toml");
   EXPECT_EQ(s.name, "test");
-  EXPECT_EQ(s.body.preset, "sphere");
-  EXPECT_EQ(*s.body.radius, 0.05);
+  EXPECT_EQ(s.body_spec.preset, "sphere");
+  EXPECT_EQ(*s.body_spec.radius, 0.05);
   EXPECT_EQ(s.contact.g, 9.81);
   EXPECT_EQ(s.law, "exact");
   EXPECT_EQ(s.run.integrator.method, "rk8pd");
@@ -69,6 +69,51 @@ TEST(DynScenario, OverridesUseTheSameKeyPaths) {
   EXPECT_EQ(s.overrides.size(), 6u);
 }
 
+// The body is built once, when the scenario is resolved, and travels with it.
+TEST(DynScenario, CarriesItsBuiltBody) {
+  const Scenario s = parse_scenario(kGood, "test.toml");
+  constexpr double kMass = 1.0, kRadius = 0.05;
+  EXPECT_EQ(s.body.mass, kMass);
+  EXPECT_NEAR(s.body.A, 0.4 * kMass * kRadius * kRadius, 1e-15);  // solid sphere: 2/5 m R^2
+  EXPECT_NEAR(s.body.C, 0.4 * kMass * kRadius * kRadius, 1e-15);
+  EXPECT_NEAR(s.body.profile.z_hi() - s.body.profile.z_lo(), 2.0 * kRadius, 1e-15);
+}
+
+// A file is parsed once; each run resolves its own overrides from the parsed document.
+TEST(DynScenario, ADocumentIsParsedOnceAndResolvedPerRun) {
+  const ScenarioDocument doc = ScenarioDocument::parse(kGood, "test.toml");
+  const Scenario plain = doc.resolve();
+  const Scenario printed = doc.resolve({"contact.law=pade-printed", "run.t_end=0.5"});
+  EXPECT_EQ(plain.law, "exact");
+  EXPECT_EQ(plain.run.t_end, 2.0);
+  EXPECT_TRUE(plain.overrides.empty());
+  EXPECT_EQ(printed.law, "pade-printed");
+  EXPECT_EQ(printed.run.t_end, 0.5);
+  EXPECT_EQ(printed.overrides.size(), 2u);
+  EXPECT_EQ(doc.resolve().run.t_end, 2.0);  // overrides apply to a copy
+}
+
+// scenario.toml, written beside a run, is the resolved scenario: read back from any file name it
+// gives the same name, law and values (numbers to the last bit), with no overrides left to apply.
+TEST(DynScenario, TheResolvedTomlReadsBackAsTheSameScenario) {
+  const std::string no_name = replace(kGood, "name = \"test\"", "");
+  const Scenario s = parse_scenario(no_name, "data/sphere-x.toml",
+                                    {"contact.law=pade-printed", "initial.v=[0.30000000000000004, 0, 1e-300]",
+                                     "run.t_end=0.1"});
+  ASSERT_EQ(s.name, "sphere-x");
+  const Scenario back = parse_scenario(s.resolved_toml, "out/scenario.toml");
+  EXPECT_EQ(back.name, "sphere-x");
+  EXPECT_EQ(back.law, "pade-printed");
+  EXPECT_EQ(back.initial.v.x(), 0.30000000000000004);
+  EXPECT_EQ(back.initial.v.z(), 1e-300);
+  EXPECT_EQ(back.initial.eps, s.initial.eps);
+  EXPECT_EQ(back.initial.gamma, s.initial.gamma);
+  EXPECT_EQ(back.run.t_end, 0.1);
+  EXPECT_EQ(back.resolved_toml, s.resolved_toml);
+  // The law is recorded even where the file left it to the default.
+  EXPECT_NE(parse_scenario(kGood, "t.toml").resolved_toml.find("law = 'exact'"), std::string::npos);
+}
+
 TEST(DynScenario, NormalisesGammaOrRejectsAVectorFarFromUnit) {
   const Scenario s = parse_scenario(replace(kGood, "gamma = [0, 0, 1]", "gamma = [0.2431, 0, 0.97]"), "t");
   EXPECT_NEAR(s.initial.gamma.norm(), 1.0, 1e-15);
@@ -83,6 +128,15 @@ struct BadCase {
   std::vector<std::string> overrides;
   const char* expected;
 };
+
+// Each case gives one line containing its expected text.
+void expect_errors(const std::vector<BadCase>& cases) {
+  for (const auto& c : cases) {
+    const std::string e = error_of(c.text, c.overrides);
+    EXPECT_NE(e.find(c.expected), std::string::npos) << c.what << ": got '" << e << "'";
+    EXPECT_EQ(e.find('\n'), std::string::npos) << c.what << ": one line, got '" << e << "'";
+  }
+}
 
 TEST(DynScenario, EachBadScenarioGivesOneClearError) {
   const std::vector<BadCase> cases = {
@@ -110,11 +164,85 @@ TEST(DynScenario, EachBadScenarioGivesOneClearError) {
       {"override without =", kGood, {"run.t_end"}, "must have the form key=value"},
       {"override into a value", kGood, {"run.t_end.x=1"}, "run.t_end is not a section"},
   };
-  for (const auto& c : cases) {
-    const std::string e = error_of(c.text, c.overrides);
-    EXPECT_NE(e.find(c.expected), std::string::npos) << c.what << ": got '" << e << "'";
-    EXPECT_EQ(e.find('\n'), std::string::npos) << c.what << ": one line, got '" << e << "'";
+  expect_errors(cases);
+}
+
+// Values outside the physically meaningful ranges (docs/dynamics.md §7) are rejected when the
+// scenario is read, naming the key, instead of failing far away ("friction input U = inf").
+// One case per rule; kGood is a 5 cm, 1 kg sphere.
+TEST(DynScenario, ValuesOutsidePhysicalRangesNameTheirKey) {
+  const std::vector<BadCase> cases = {
+      {"tiny mass", kGood, {"body.mass=1e-300"}, "body.mass = 1e-300 is invalid: it must be within [1e-06, 1000000] kg"},
+      {"huge mass", kGood, {"body.mass=1e300"}, "body.mass = 1e+300 is invalid"},
+      {"tiny radius", kGood, {"body.radius=1e-300"}, "body.radius = 1e-300 is invalid"},
+      {"huge radius", kGood, {"body.radius=1e6"}, "body.radius = 1000000 is invalid"},
+      {"tiny semi-axis",
+       replace(kGood, "profile = \"sphere\"\nradius = 0.05", "profile = \"spheroid\"\nsemi_axes = [1e-9, 0.05]"),
+       {}, "body.semi_axes = [1e-09, 0.05] is invalid"},
+      {"tiny chi2 body", replace(kGood, "profile = \"sphere\"\nradius = 0.05", "chi2 = [1e-20, 0, -1]"), {},
+       "body.chi2 = [1e-20, 0, -1] is invalid"},
+      {"huge chi2 body", replace(kGood, "profile = \"sphere\"\nradius = 0.05", "chi2 = [1e8, 0, -1]"), {},
+       "body.chi2 = [100000000, 0, -1] is invalid"},
+      {"tiny A", kGood, {"body.A=1e-300", "body.C=1e-300"}, "body.A = 1e-300 is invalid"},
+      {"A beyond the body", kGood, {"body.A=1"}, "body.A = 1 is invalid"},  // > m r^2 = 0.0025
+      {"tiny C", kGood, {"body.C=1e-300"}, "body.C = 1e-300 is invalid"},
+      {"C beyond the body", kGood, {"body.A=0.002", "body.C=0.003"}, "body.C = 0.003 is invalid"},
+      {"huge friction", kGood, {"contact.k=1e300"}, "contact.k = 1e+300 is invalid: it must be within [0, 10]"},
+      {"huge stiffness", kGood, {"contact.lambda=1e300"}, "contact.lambda = 1e+300 is invalid"},
+      {"tiny stiffness", kGood, {"contact.lambda=1e-300"}, "contact.lambda = 1e-300 is invalid"},
+      {"too soft for the weight", kGood, {"contact.lambda=100"}, "contact.lambda = 100 is invalid: the static compression"},
+      {"huge gravity", kGood, {"contact.g=1e300"}, "contact.g = 1e+300 is invalid"},
+      {"negative gravity", kGood, {"contact.g=-9.81"}, "contact.g = -9.81 is invalid"},
+      {"huge spin", kGood, {"initial.omega=[0, 0, 1e300]"}, "initial.omega = [0, 0, 1e+300] is invalid"},
+      {"fast spin", kGood, {"initial.omega=[0, 0, 1e5]"}, "initial.omega = [0, 0, 100000] is invalid"},
+      {"huge speed", kGood, {"initial.v=[1e300, 0, 0]"}, "initial.v = [1e+300, 0, 0] is invalid"},
+      {"deep compression", kGood, {"initial.eps=-0.01"}, "initial.eps = -0.01 is invalid"},
+      {"far above", kGood, {"initial.eps=1e300"}, "initial.eps = 1e+300 is invalid"},
+  };
+  expect_errors(cases);
+}
+
+// The limits let through what the model is meant for, up to the edges of the ranges.
+TEST(DynScenario, ValuesInsideThePhysicalRangesAreAccepted) {
+  for (const std::vector<std::string>& overrides : std::vector<std::vector<std::string>>{
+           {"body.mass=1e-6", "contact.lambda=1e6"},
+           {"body.radius=1e-4", "body.mass=1e-6", "contact.lambda=1e5"},
+           {"contact.k=0"},
+           {"contact.k=10"},
+           {"contact.g=0", "contact.lambda=1e-3", "initial.eps=0.01"},
+           {"initial.omega=[0, 0, 19000]"},  // surface at 950 m/s
+           {"initial.v=[999, 0, 0]"},
+           {"initial.eps=1000"}}) {
+    EXPECT_NO_THROW((void)parse_scenario(kGood, "test.toml", overrides)) << ::testing::PrintToString(overrides);
   }
+}
+
+TEST(DynScenario, AFolderIsNotAScenarioFile) {
+  const std::filesystem::path dir = std::filesystem::path(FRICTIONLAB_SOURCE_DIR) / "data" / "scenarios";
+  try {
+    (void)load_scenario(dir);
+    ADD_FAILURE() << "a folder was read as a scenario";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("is a folder"), std::string::npos) << e.what();
+  }
+}
+
+// An error caused by an override is blamed on it; an error in the file, on the file.
+TEST(DynScenario, AnErrorIsBlamedOnWhatSetTheValue) {
+  EXPECT_EQ(error_of(kGood, {"run.t_end=abc"}).rfind("--set run.t_end=abc: run.t_end must be a number", 0), 0u)
+      << error_of(kGood, {"run.t_end=abc"});
+  EXPECT_EQ(error_of(kGood, {"run.t_end=3", "body.mass=1e-300"}).rfind("--set body.mass=1e-300: body.mass = 1e-300 is invalid", 0), 0u);
+  EXPECT_EQ(error_of(kGood, {"initial.omega=[0, 0, abc]"}).rfind("--set initial.omega=[0, 0, abc]: initial.omega", 0), 0u);
+  EXPECT_EQ(error_of(kGood, {"run.t_end=-1"}).rfind("--set run.t_end=-1: run.t_end = -1 is invalid", 0), 0u);
+  EXPECT_EQ(error_of(kGood, {"contact.law=fast"}).rfind("--set contact.law=fast: contact.law = 'fast' is invalid", 0), 0u);
+  EXPECT_EQ(error_of(kGood, {"run.tend=3"}).rfind("--set run.tend=3: unknown key run.tend", 0), 0u);
+  EXPECT_EQ(error_of(kGood, {"run.t_end.x=1"}).rfind("--set run.t_end.x=1: ", 0), 0u);
+  EXPECT_EQ(error_of(kGood, {"run.t_end"}).rfind("--set run.t_end: ", 0), 0u);
+  // The last override of a key is the one that counts.
+  EXPECT_EQ(error_of(kGood, {"run.t_end=abc", "run.t_end=-2"}).rfind("--set run.t_end=-2: ", 0), 0u);
+  // A bad value of the file stays the file's, whatever else is overridden.
+  const std::string e = error_of(replace(kGood, "k = 0.2", "k = -1"), {"run.t_end=3"});
+  EXPECT_EQ(e.rfind("test.toml: contact.k = -1 is invalid", 0), 0u) << e;
 }
 
 TEST(DynScenario, ShippedScenariosAreValid) {

@@ -2,8 +2,13 @@
 
 #include <gtest/gtest.h>
 
+#include <csignal>
+#include <algorithm>
 #include <filesystem>
+#include <sstream>
 #include <string>
+
+#include <nlohmann/json.hpp>
 
 #include "tests/cli/cli_runner.h"
 
@@ -25,11 +30,10 @@ TEST(DynSimulateCommand, AShortRunWritesCsvAndSummary) {
   EXPECT_NE(r.out.find("t_end at t = 0.2 s"), std::string::npos) << r.out;
   EXPECT_TRUE(r.err.empty()) << r.err;  // no progress bar when stderr is not a terminal
   EXPECT_NE(slurp(dir / "trajectory.csv").find("t,gamma1,gamma2,gamma3"), std::string::npos);
-  const std::string json = slurp(dir / "summary.json");
-  EXPECT_NE(json.find("\"reason\": \"t_end\""), std::string::npos) << json;
-  EXPECT_NE(json.find("\"overrides\": [\"run.t_end=0.2\", \"run.output_dt=0.05\", \"contact.law=exact\"]"),
-            std::string::npos)
-      << json;
+  const auto json = nlohmann::json::parse(slurp(dir / "summary.json"));
+  EXPECT_EQ(json["termination"]["reason"], "t_end");
+  EXPECT_EQ(json["scenario"]["overrides"],
+            nlohmann::json::array({"run.t_end=0.2", "run.output_dt=0.05", "contact.law=exact"}));
   std::filesystem::remove_all(dir);
 }
 
@@ -47,6 +51,117 @@ TEST(DynSimulateCommand, BadInputGivesOneLineAndNonZeroExit) {
   }
   EXPECT_FALSE(std::filesystem::exists(dir / "summary.json"));
 }
+
+// Whole rows only: every line of the CSV ends in a newline and has every column.
+void expect_whole_rows(const std::string& csv) {
+  ASSERT_FALSE(csv.empty());
+  EXPECT_EQ(csv.back(), '\n') << "the CSV ends in half a row";
+  std::istringstream lines(csv);
+  int n = 0;
+  for (std::string line; std::getline(lines, line); ++n)
+    ASSERT_EQ(std::count(line.begin(), line.end(), ','), 24) << "row " << n << ": " << line;
+}
+
+bool has_temporary_files(const std::filesystem::path& dir) {
+  for (const auto& entry : std::filesystem::directory_iterator(dir))
+    if (entry.path().filename().string().find(".tmp-") != std::string::npos) return true;
+  return false;
+}
+
+// A disk that fills up mid-run (here a file-size limit, as `ulimit -f` sets): the run stops at
+// once, the command says so on one line and exits 1, and what was written stays valid.
+TEST(DynSimulateCommand, AFileSizeLimitStopsTheRunWithOneErrorAndValidFiles) {
+  const auto dir = fresh_dir("fsize");
+  constexpr rlim_t kLimit = 20000;  // bytes: ~40 rows of the ~1000 the run would write
+  const auto r = testing::run_frictionlab_with_file_limit(
+      "simulate " + kScenarios + "sphere-spinning.toml --set run.t_end=1 --set run.output_dt=1e-3 --out " +
+          dir.string(),
+      kLimit);
+  EXPECT_EQ(r.signal, 0) << "killed by a signal";
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_EQ(r.err.rfind("frictionlab: error: ", 0), 0u) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_NE(r.err.find("trajectory.csv"), std::string::npos) << r.err;
+  EXPECT_EQ(r.out.find("wrote"), std::string::npos) << r.out;
+  const std::string csv = slurp(dir / "trajectory.csv");
+  EXPECT_LE(csv.size(), kLimit);
+  expect_whole_rows(csv);
+  // The summary, where the simulation reports the stop, says why.
+  ASSERT_TRUE(std::filesystem::exists(dir / "summary.json"));
+  const auto summary = nlohmann::json::parse(slurp(dir / "summary.json"), nullptr, false);
+  ASSERT_FALSE(summary.is_discarded());
+  EXPECT_EQ(summary["termination"]["reason"], "output-error");
+  EXPECT_FALSE(has_temporary_files(dir));
+  std::filesystem::remove_all(dir);
+}
+
+// The summary does not fit under the limit while the short trajectory does: no summary.json at
+// all (never half of one), an error naming it, exit 1.
+TEST(DynSimulateCommand, ASummaryThatCannotBeWrittenIsAnErrorAndLeavesNoPartialFile) {
+  const auto dir = fresh_dir("fsize_summary");
+  const auto r = testing::run_frictionlab_with_file_limit(
+      "simulate " + kScenarios + "sphere-spinning.toml --set run.t_end=0.01 --set run.output_dt=0.01 --out " +
+          dir.string(),
+      1000);  // bytes: the CSV (~570) and scenario.toml (~490) fit, the summary (~1600) does not
+  EXPECT_EQ(r.signal, 0) << "killed by a signal";
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_EQ(r.err.rfind("frictionlab: error: ", 0), 0u) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_NE(r.err.find("summary.json"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "summary.json"));
+  expect_whole_rows(slurp(dir / "trajectory.csv"));
+  EXPECT_FALSE(has_temporary_files(dir));
+  std::filesystem::remove_all(dir);
+}
+
+// A trajectory file that refuses every write (a link to /dev/full): an error naming it and why.
+TEST(DynSimulateCommand, ATrajectoryThatCannotBeWrittenStopsTheRun) {
+  const auto dir = fresh_dir("devfull");
+  std::filesystem::create_directories(dir);
+  std::filesystem::create_symlink("/dev/full", dir / "trajectory.csv");
+  const auto r = run_frictionlab("simulate " + kScenarios + "sphere-spinning.toml --set run.t_end=1 --out " +
+                                 dir.string());
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_NE(r.err.find("trajectory.csv"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("No space left on device"), std::string::npos) << r.err;
+  EXPECT_TRUE(r.out.empty()) << r.out;
+  std::filesystem::remove_all(dir);
+}
+
+// The line on stdout that cannot be written is an error too.
+TEST(DynSimulateCommand, StandardOutputThatCannotBeWrittenIsAnError) {
+  const auto dir = fresh_dir("stdout_full");
+  const auto r = run_frictionlab("simulate " + kScenarios + "sphere-spinning.toml --set run.t_end=0.01 --out " +
+                                 dir.string() + " >/dev/full");
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_EQ(r.err, "frictionlab: error: writing to standard output failed: No space left on device\n");
+  std::filesystem::remove_all(dir);
+}
+
+// A frictionless sphere slides for ever (k = 0: no rest, no rolling), so the run is still going
+// when the signal comes: it must stop between steps, write its summary and exit 3.
+class DynSimulateCommandSignal : public ::testing::TestWithParam<int> {};
+
+TEST_P(DynSimulateCommandSignal, StopsTheRunWithItsSummaryWritten) {
+  const auto dir = fresh_dir("signal");
+  const auto r = testing::run_frictionlab_signalled(
+      "simulate " + kScenarios + "sphere-sliding.toml --set contact.k=0 --set run.t_end=1e5 --set run.output_dt=0.1 "
+      "--out " + dir.string(),
+      GetParam(), [&] { return std::filesystem::exists(dir / "trajectory.csv"); });
+  EXPECT_EQ(r.signal, 0) << "killed by the signal instead of stopping";
+  EXPECT_EQ(r.exit_code, 3) << r.err;
+  const auto summary = nlohmann::json::parse(slurp(dir / "summary.json"), nullptr, false);
+  ASSERT_FALSE(summary.is_discarded()) << slurp(dir / "summary.json");
+  EXPECT_EQ(summary["termination"]["reason"], "interrupted");
+  EXPECT_LT(summary["final_time"].get<double>(), 1e5);
+  std::filesystem::remove_all(dir);
+}
+
+INSTANTIATE_TEST_SUITE_P(Signals, DynSimulateCommandSignal, ::testing::Values(SIGINT, SIGTERM, SIGHUP),
+                         [](const auto& p) {
+                           return p.param == SIGINT ? "SIGINT" : p.param == SIGTERM ? "SIGTERM" : "SIGHUP";
+                         });
 
 }  // namespace
 }  // namespace frictionlab

@@ -115,7 +115,7 @@ elseif(STEP STREQUAL "command")
   # Every run writes the scenario file it read on the first line of its scenario.toml.
   file(STRINGS ${run_dir}/out/runs/egg-printed-a/coulomb-decoupled/scenario.toml first LIMIT_COUNT 1)
   file(REAL_PATH ${prefix}/share/frictionlab/scenarios/egg-printed-a.toml expected)
-  if(NOT first MATCHES "^# (.*) after overrides")
+  if(NOT first MATCHES "^# (.*) resolved")
     message(FATAL_ERROR "unexpected first line of scenario.toml: ${first}")
   endif()
   file(REAL_PATH ${CMAKE_MATCH_1} read)

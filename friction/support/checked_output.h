@@ -1,0 +1,77 @@
+#pragma once
+// Output whose every write and close is checked, and which stays valid when a write fails (a full
+// disk, a file-size limit, /dev/full):
+//
+//   RecordFile             a file of records (CSV rows): a failed write is rolled back to the
+//                          last whole record, so the file never ends in half a row;
+//   write_file_atomically  a small file (summary.json, scenario.toml) written to a temporary
+//                          file beside it and renamed over it: it is either whole or absent;
+//   finish_standard_output flushes and closes stdout and says if that failed.
+//
+// Failures throw OutputError naming the file and the system's reason.
+
+#include <cstdint>
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace frictionlab::support {
+
+/// A write, flush or close failed.
+class OutputError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// A file written as a sequence of whole records. Records are buffered; if a write fails (part of
+/// the buffer may have reached the file) the file is cut back to the end of the last whole record
+/// that reached it, and it stays failed (every later call throws the same OutputError). Not
+/// thread-safe.
+class RecordFile {
+ public:
+  /// Creates or truncates `path`. Throws OutputError if it cannot be opened for writing.
+  explicit RecordFile(const std::filesystem::path& path, std::size_t buffer_bytes = kDefaultBuffer);
+  /// Closes the file; errors are lost (call close() to see them).
+  ~RecordFile();
+  RecordFile(const RecordFile&) = delete;
+  RecordFile& operator=(const RecordFile&) = delete;
+
+  /// Appends one whole record (its own line ending included). Throws OutputError.
+  void append(std::string_view record);
+  /// Hands every buffered record to the system (a process killed later keeps them). Throws.
+  void flush();
+  /// Flushes and closes, checking both. Throws OutputError; later calls do nothing.
+  void close();
+
+  /// Bytes of whole records that reached the file.
+  [[nodiscard]] std::uint64_t bytes_written() const { return written_; }
+  [[nodiscard]] bool failed() const { return !failure_.empty(); }
+  [[nodiscard]] const std::filesystem::path& path() const { return path_; }
+
+  static constexpr std::size_t kDefaultBuffer = 1 << 16;
+
+ private:
+  [[noreturn]] void fail(const std::string& what, int error_number);
+  void throw_if_failed() const;
+
+  std::filesystem::path path_;
+  int fd_ = -1;
+  std::string buffer_;
+  std::vector<std::size_t> record_ends_;  // end of each record in buffer_
+  std::size_t capacity_;
+  std::uint64_t written_ = 0;
+  std::string failure_;
+};
+
+/// Writes `content` to `path` through a temporary file in the same folder, renamed over `path`
+/// once it is completely written and closed. On failure the temporary file is removed, `path`
+/// is left as it was, and OutputError names `path`.
+void write_file_atomically(const std::filesystem::path& path, std::string_view content);
+
+/// Flushes std::cout and stdout and closes stdout; throws OutputError ("writing to standard
+/// output failed: REASON") if any of it failed (a closed pipe, /dev/full). Call once, at the end.
+void finish_standard_output();
+
+}  // namespace frictionlab::support

@@ -1,0 +1,91 @@
+// What every subcommand of `frictionlab` shares (dynamics/cli/main.cpp): errors are one line
+// `frictionlab: error: ...` with exit code 1, --help prints help with exit code 0, and output that
+// cannot be written is an error.
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "tests/cli/cli_runner.h"
+
+namespace frictionlab::testing {
+namespace {
+
+long count_lines(const std::string& s) { return std::count(s.begin(), s.end(), '\n'); }
+
+TEST(CliMain, StandardOutputToAFullDeviceIsAnError) {
+  const auto r = run_frictionlab("laws >/dev/full");
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(r.err, "frictionlab: error: writing to standard output failed: No space left on device\n");
+}
+
+TEST(CliMain, HelpStillPrintsHelpAndExitsZero) {
+  for (const std::string args : {"--help", "simulate --help", "paper --help", "accuracy --help", "laws --help"}) {
+    const auto r = run_frictionlab(args);
+    EXPECT_EQ(r.exit_code, 0) << args << ": " << r.err;
+    EXPECT_NE(r.out.find("Usage"), std::string::npos) << args << ": " << r.out;
+    EXPECT_GT(count_lines(r.out), 2) << args;
+  }
+}
+
+// Every command-line error, CLI11's own included, is one line `frictionlab: error: ...` and exit 1.
+struct CliError {
+  std::string args;
+  std::string expected;  // a part of the message
+};
+
+TEST(CliMain, EveryCommandLineErrorIsOneLineAndExitOne) {
+  const std::string never = fresh_temp_dir("cli_never").string();  // no command may create it
+  const std::string scenario = std::string(FRICTIONLAB_SOURCE_DIR) + "/data/scenarios/sphere-spinning.toml";
+  const std::vector<CliError> cases = {
+      {"frction", "unknown subcommand 'frction'"},
+      {"", "a subcommand is required"},
+      {"friction --U abc --Omega 0 --a 1 --b 1 --psi 0 --N 1 --k 0.1", "--U"},
+      {"friction --bogus 1", "--bogus"},
+      {"simulate " + scenario, "--out is required"},
+      {"simulate " + scenario + " extra --out " + never, "extra"},
+      {"paper --out " + never + " --jobs abc", "--jobs"},
+      {"paper --out " + never + " --jobs -1", "--jobs = -1 is invalid"},
+      {"accuracy --out " + never + " --s-points -3", "--s-points"},
+      {"accuracy --out " + never + " --mu-points -1", "--mu-points"},
+      {"accuracy --out " + never + " --psi-points x", "--psi-points"},
+      {"accuracy --out " + never + " --threads -1", "--threads"},
+      {"accuracy --out " + never + " --s-points 100000 --mu-points 100000", "grid points"},
+      {"laws extra", "extra"},
+  };
+  for (const auto& c : cases) {
+    const auto r = run_frictionlab(c.args);
+    EXPECT_EQ(r.exit_code, 1) << c.args << ": " << r.err;
+    EXPECT_EQ(r.err.rfind("frictionlab: error: ", 0), 0u) << c.args << ": " << r.err;
+    EXPECT_EQ(count_lines(r.err), 1) << c.args << ": " << r.err;
+    EXPECT_NE(r.err.find(c.expected), std::string::npos) << c.args << ": " << r.err;
+    EXPECT_TRUE(r.out.empty()) << c.args << ": " << r.out;
+  }
+  EXPECT_FALSE(std::filesystem::exists(never));
+}
+
+TEST(CliMain, AnUnknownSubcommandListsTheValidOnes) {
+  const auto r = run_frictionlab("frction");
+  for (const std::string name : {"laws", "friction", "simulate", "accuracy", "paper"})
+    EXPECT_NE(r.err.find(name), std::string::npos) << name << " in " << r.err;
+  EXPECT_NE(r.err.find("did you mean 'friction'"), std::string::npos) << r.err;
+}
+
+// A --set that is wrong is blamed on the --set, not on the file it overrides.
+TEST(CliMain, ABadOverrideIsBlamedOnTheOverride) {
+  const std::string never = fresh_temp_dir("cli_never_set").string();
+  const std::string scenario = std::string(FRICTIONLAB_SOURCE_DIR) + "/data/scenarios/sphere-spinning.toml";
+  const auto r = run_frictionlab("simulate " + scenario + " --set run.t_end=abc --out " + never);
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(r.err.rfind("frictionlab: error: --set run.t_end=abc: run.t_end must be a number", 0), 0u) << r.err;
+  const auto law = run_frictionlab("simulate " + scenario + " --law fast --out " + never);
+  EXPECT_EQ(law.exit_code, 1);
+  EXPECT_EQ(law.err.rfind("frictionlab: error: --law fast: ", 0), 0u) << law.err;
+  EXPECT_FALSE(std::filesystem::exists(never));
+}
+
+}  // namespace
+}  // namespace frictionlab::testing
