@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "dynamics/paper/experiment_runner.h"
@@ -13,8 +14,11 @@
 
 namespace frictionlab::dynamics::paper {
 
-/// Two runs of one case "differ" once their gamma3 are further apart than this (the 0.05).
+/// Two runs of one case "differ" once their gamma3 are further apart than this.
 inline constexpr double kDivergenceThreshold = 0.05;
+/// The cost table gives each law's wall time over this law's for the same case: the performance
+/// target of the paper job is `exact` within a factor of this law's time (docs/experiments.md §6).
+inline constexpr std::string_view kCostComparisonLaw = "pade-reconstructed";
 
 /// One run against the reference run of its (egg, case).
 struct LawComparison {

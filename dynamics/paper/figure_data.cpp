@@ -2,11 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <fstream>
 #include <limits>
-#include <stdexcept>
 #include <vector>
+
+#include "friction/support/checked_output.h"
+#include "friction/support/number_format.h"
 
 namespace frictionlab::dynamics::paper {
 namespace {
@@ -28,12 +28,8 @@ struct Stats {
   [[nodiscard]] double mean() const { return count > 0 ? sum / count : std::numeric_limits<double>::quiet_NaN(); }
 };
 
-std::string cell(double x) {
-  if (!std::isfinite(x)) return "NaN";
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.7g", x);
-  return buf;
-}
+// Seven significant digits (plenty for a figure); "NaN" is gnuplot's missing value.
+std::string cell(double x) { return std::isfinite(x) ? support::significant(x, 7) : "NaN"; }
 
 std::string triple(const Stats& x) {
   return x.count > 0 ? cell(x.lo) + ' ' + cell(x.hi) + ' ' + cell(x.mean()) : std::string("NaN NaN NaN");
@@ -44,7 +40,7 @@ void raise(double& cap, const Stats& x) {
 }
 
 // One line: min, max, mean of each quantity over samples [i0, i1), at bin centre t_mid; raises the caps.
-void write_bin(std::ostream& out, const RunSeries& s, std::size_t i0, std::size_t i1, double t_mid, AxisCaps& caps) {
+void write_bin(std::string& out, const RunSeries& s, std::size_t i0, std::size_t i1, double t_mid, AxisCaps& caps) {
   Stats g, w, f, m, a, r, nn;
   for (std::size_t i = i0; i < i1; ++i) {
     g.add(s.gamma3[i]);
@@ -55,8 +51,8 @@ void write_bin(std::ostream& out, const RunSeries& s, std::size_t i0, std::size_
     r.add(s.axis_ratio[i]);
     nn.add(s.n_over_mg[i]);
   }
-  out << cell(t_mid) << ' ' << triple(g) << ' ' << cell(w.mean()) << ' ' << triple(f) << ' ' << triple(m) << ' '
-      << triple(a) << ' ' << triple(r) << ' ' << triple(nn) << '\n';
+  out += cell(t_mid) + ' ' + triple(g) + ' ' + cell(w.mean()) + ' ' + triple(f) + ' ' + triple(m) + ' ' + triple(a) +
+         ' ' + triple(r) + ' ' + triple(nn) + '\n';
   raise(caps.force, f);
   raise(caps.moment, m);
   raise(caps.major, a);
@@ -65,9 +61,7 @@ void write_bin(std::ostream& out, const RunSeries& s, std::size_t i0, std::size_
 
 // `bins` bins of equal width over [t0, t1] (the last bin closed); one bin if t1 <= t0.
 AxisCaps write_bins(const std::filesystem::path& path, const RunSeries& s, double t0, double t1, int bins_wanted) {
-  std::ofstream out(path);
-  if (!out) throw std::runtime_error("cannot write '" + path.string() + "'");
-  out << "# t_s, then min max mean of: gamma3; omega_sq_per_s2 (mean only); F_N; M_Nmm; a_mm; b/a; N/(m g)\n";
+  std::string out = "# t_s, then min max mean of: gamma3; omega_sq_per_s2 (mean only); F_N; M_Nmm; a_mm; b/a; N/(m g)\n";
   AxisCaps caps;
   const std::size_t n = s.size();
   const int bins = t1 > t0 ? bins_wanted : 1;
@@ -80,7 +74,7 @@ AxisCaps write_bins(const std::filesystem::path& path, const RunSeries& s, doubl
     while (i < n && (s.t[i] < hi || (last && s.t[i] <= hi))) ++i;
     if (i > first) write_bin(out, s, first, i, t0 + (b + 0.5) * width, caps);
   }
-  if (!out) throw std::runtime_error("writing '" + path.string() + "' failed");
+  support::write_file_atomically(path, out);
   return caps;
 }
 
@@ -92,15 +86,14 @@ FigureRanges write_figure_data(const std::filesystem::path& dir, const std::stri
   FigureRanges r;
   r.full = write_bins(dir / (stem + ".full.dat"), s, 0.0, t_final, kFigureBins);
   r.early = write_bins(dir / (stem + ".early.dat"), s, 0.0, std::min(t_final, kEarlyWindow), kEarlyBins);
-  std::ofstream end(dir / (stem + ".end.dat"));
-  if (!end) throw std::runtime_error("cannot write '" + (dir / (stem + ".end.dat")).string() + "'");
-  end << "# t_s gamma3 omega_sq_per_s2 F_N M_Nmm a_mm ratio N_over_mg (last sample)\n";
+  std::string end = "# t_s gamma3 omega_sq_per_s2 F_N M_Nmm a_mm ratio N_over_mg (last sample)\n";
   if (!s.empty()) {
     const std::size_t k = s.size() - 1;
-    end << cell(s.t[k]) << ' ' << cell(s.gamma3[k]) << ' ' << cell(s.omega_sq[k]) << ' ' << cell(s.force[k]) << ' '
-        << cell(kMilli * s.moment[k]) << ' ' << cell(kMilli * s.major[k]) << ' ' << cell(s.axis_ratio[k]) << ' '
-        << cell(s.n_over_mg[k]) << '\n';
+    end += cell(s.t[k]) + ' ' + cell(s.gamma3[k]) + ' ' + cell(s.omega_sq[k]) + ' ' + cell(s.force[k]) + ' ' +
+           cell(kMilli * s.moment[k]) + ' ' + cell(kMilli * s.major[k]) + ' ' + cell(s.axis_ratio[k]) + ' ' +
+           cell(s.n_over_mg[k]) + '\n';
   }
+  support::write_file_atomically(dir / (stem + ".end.dat"), end);
   return r;
 }
 

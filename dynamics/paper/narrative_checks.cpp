@@ -1,22 +1,16 @@
 #include "dynamics/paper/narrative_checks.h"
 
 #include <cmath>
-#include <cstdio>
+#include <iterator>
+
+#include "friction/support/number_format.h"
 
 namespace frictionlab::dynamics::paper {
 namespace {
 
-std::string g3(double x) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.3g", x);
-  return buf;
-}
-
-std::string f(double x, int digits) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.*f", digits, x);
-  return buf;
-}
+// Evidence numbers: three significant digits, or `digits` after the point.
+std::string g3(double x) { return support::significant(x, 3); }
+std::string f(double x, int digits) { return support::fixed(x, digits); }
 
 std::string percent(double part, double whole) { return f(100.0 * part / whole, 1) + " % of the run"; }
 
@@ -200,6 +194,169 @@ ClaimCheck never_lifts_off(const std::string& id, const std::string& text, const
   return c;
 }
 
+// a2: it spins about the vertical only briefly.
+ClaimCheck spins_briefly(const RunResult* a, const NarrativeRules& rules) {
+  ClaimCheck c = claim("a2", "it spins about the vertical only briefly");
+  if (!has_vertical_spin(a)) {
+    set(c, Verdict::not_measurable, "no vertical spin (see a1)");
+    return c;
+  }
+  const double d = spin_duration(a);
+  set(c, d <= rules.quick_fraction * a->features.t_final ? Verdict::holds : Verdict::fails,
+      g3(d) + " s (" + percent(d, a->features.t_final) + "); |gamma3| > 0.99 for " + g3(near_duration(a)) + " s");
+  return c;
+}
+
+// b2 when case a or b has no vertical spin at 0.999: judged on the near-vertical (0.99) episodes.
+void judge_near_vertical_spins(ClaimCheck& c, const RunResult* a, const RunResult* b, const NarrativeRules& rules) {
+  const std::string why = !has_vertical_spin(b) ? "no vertical spin in case b" : "no vertical spin in case a";
+  if (a && b && a->executed && b->executed && a->features.near_vertical.left && b->features.near_vertical.left) {
+    const double ratio = near_duration(b) / near_duration(a);
+    set(c, ratio >= rules.much_longer ? Verdict::partly : Verdict::fails,
+        why + " (0.999); |gamma3| > 0.99 for " + g3(near_duration(b)) + " s vs " + g3(near_duration(a)) +
+            " s in case a (x" + f(ratio, 2) + ")");
+  } else {
+    set(c, Verdict::not_measurable, why);
+  }
+}
+
+// b2: it spins about the vertical much longer than in case a.
+ClaimCheck spins_much_longer(const RunResult* a, const RunResult* b, const NarrativeRules& rules) {
+  ClaimCheck c = claim("b2", "it spins about the vertical much longer than in case a");
+  if (!has_vertical_spin(b) || !has_vertical_spin(a)) {
+    judge_near_vertical_spins(c, a, b, rules);
+    return c;
+  }
+  const double ratio = spin_duration(b) / spin_duration(a);
+  const double near_ratio = near_duration(b) / near_duration(a);
+  const std::string e = g3(spin_duration(b)) + " s vs " + g3(spin_duration(a)) + " s in case a (x" + f(ratio, 2) +
+                        "); |gamma3| > 0.99: " + g3(near_duration(b)) + " s vs " + g3(near_duration(a)) + " s (x" +
+                        f(near_ratio, 2) + ")";
+  const Verdict v = ratio >= rules.much_longer ? Verdict::holds
+                                               : (near_ratio >= rules.much_longer ? Verdict::partly : Verdict::fails);
+  set(c, v, e);
+  return c;
+}
+
+// b4: then it oscillates down to equilibrium (case a: smoothly).
+ClaimCheck oscillates_down(const RunResult* a, const RunResult* b, const NarrativeRules& rules) {
+  ClaimCheck c = claim("b4", "then it oscillates down to equilibrium (case a: smoothly)");
+  if (cut_short(b) || !b->ended_normally() || !std::isfinite(b->features.descent_oscillation)) {
+    set(c, Verdict::not_measurable, cut_short(b) || !b->ended_normally() ? stopped(b) : "no descent after a plateau");
+    return c;
+  }
+  const double ob = b->features.descent_oscillation;
+  if (a == nullptr || !a->ended_normally() || !std::isfinite(a->features.descent_oscillation)) {
+    set(c, Verdict::not_measurable, "peak-to-peak " + f(ob, 3) + "; case a has no descent to compare");
+    return c;
+  }
+  const double oa = a->features.descent_oscillation;
+  set(c, ob >= rules.oscillation_factor * oa && b->stagnated() ? Verdict::holds : Verdict::fails,
+      "gamma3 swings " + f(ob, 3) + " peak-to-peak about its 1-s mean vs " + f(oa, 3) + " in case a; ends at " +
+          final_position(b));
+  return c;
+}
+
+// c1: the axis rises toward the position with the lowest centre of mass; c2: without reaching it.
+std::vector<ClaimCheck> rises_toward_lowest(const RunResult* cc) {
+  ClaimCheck c1 = claim("c1", "the axis rises toward the position with the lowest centre of mass");
+  ClaimCheck c2 = claim("c2", "without reaching it");
+  if (cut_short(cc) || !cc->features.plateau.found) {
+    const bool measurable = !cut_short(cc) && cc->ended_normally();
+    const std::string why = measurable ? "no plateau: the axis does not settle" : stopped(cc) + " before a plateau";
+    set(c1, measurable ? Verdict::fails : Verdict::not_measurable, why);
+    set(c2, Verdict::not_measurable, why);
+    return {c1, c2};
+  }
+  const Plateau& p = cc->features.plateau;
+  const int dir = p.gamma3 > cc->features.gamma3_initial ? 1 : -1;
+  set(c1, dir == cc->low_pole ? Verdict::holds : Verdict::fails,
+      "gamma3 " + f(cc->features.gamma3_initial, 3) + " -> " + f(p.gamma3, 3) + " by t = " + g3(p.t_start) +
+          " s, toward " + pole_name(dir) + "; lowest centre of mass at " + pole_name(cc->low_pole));
+  const bool reached = cc->features.rise_extreme > cc->thresholds.vertical;
+  set(c2, reached ? Verdict::fails : Verdict::holds,
+      "closest approach before the plateau: gamma3 = " + f(dir * cc->features.rise_extreme, 3));
+  return {c1, c2};
+}
+
+// c3: it settles at the angle case a reaches after its vertical spin.
+ClaimCheck settles_at_case_a_angle(const RunResult* a, const RunResult* cc, const NarrativeRules& rules) {
+  ClaimCheck c = claim("c3", "it settles at the angle case a reaches after its vertical spin");
+  const Plateau& p = cc->features.plateau;
+  if (cut_short(cc) || !p.found || a == nullptr || cut_short(a) || !a->features.plateau.found) {
+    set(c, Verdict::not_measurable,
+        cut_short(cc) ? stopped(cc) : (!p.found ? "no plateau in case c" : "no plateau in case a to compare"));
+    return c;
+  }
+  const double da = a->features.plateau.tilt_deg();
+  const double dc = p.tilt_deg();
+  set(c, std::abs(dc - da) <= rules.same_angle_deg ? Verdict::holds : Verdict::fails,
+      f(dc, 1) + " deg vs " + f(da, 1) + " deg in case a");
+  return c;
+}
+
+// c4: then it moves as in case a (same final position).
+ClaimCheck ends_as_case_a(const RunResult* a, const RunResult* cc, const NarrativeRules& rules) {
+  ClaimCheck c = claim("c4", "then it moves as in case a (same final position)");
+  if (cut_short(cc) || !cc->ended_normally() || a == nullptr || !a->ended_normally()) {
+    set(c, Verdict::not_measurable, !cc->ended_normally() ? stopped(cc) : "case a " + stopped(a));
+    return c;
+  }
+  const bool same = (cc->features.gamma3_final_mean >= 0.0) == (a->features.gamma3_final_mean >= 0.0) &&
+                    on_pole(cc, rules) >= 0 && on_pole(a, rules) >= 0;
+  set(c, same && cc->stagnated() ? Verdict::holds : Verdict::fails,
+      "ends at " + final_position(cc) + " (case a: <gamma3> = " + f(a->features.gamma3_final_mean, 3) + ")");
+  return c;
+}
+
+// c5: a series of lift-offs while the axis rises.
+ClaimCheck lifts_off_while_rising(const RunResult* cc, const NarrativeRules& rules) {
+  ClaimCheck c = claim("c5", "a series of lift-offs while the axis rises");
+  if (cc == nullptr || !cc->executed) {
+    set(c, Verdict::not_measurable, stopped(cc));
+    return c;
+  }
+  const Plateau& p = cc->features.plateau;
+  const long n = cc->features.sampled_liftoffs_before_plateau;
+  const std::string upto = p.found ? "before the plateau (t < " + g3(p.t_start) + " s)" : "in the run";
+  std::string e = std::to_string(n) + " lift-offs seen in the samples " + upto + "; " +
+                  std::to_string(cc->summary.liftoffs) + " in the whole run (every step)";
+  const Verdict v = n >= rules.series_of_liftoffs ? Verdict::holds
+                                                  : (cut_short(cc, 1.0) ? Verdict::not_measurable : Verdict::fails);
+  if (!cc->ended_normally()) e += "; " + stopped(cc);
+  set(c, v, e);
+  return c;
+}
+
+std::vector<ClaimCheck> case_a_claims(const RunResult* a, const NarrativeRules& rules) {
+  return {quickly_vertical("a1", "the axis quickly becomes vertical", a, rules),
+          spins_briefly(a, rules),
+          tilts_to_plateau("a3", "then the axis tilts fairly fast to some angle", a),
+          ends_in_equilibrium("a4", "then it sinks smoothly to an equilibrium position", a, rules),
+          motion_stops("a5", "the velocities enter the stagnation region and the motion stops", a),
+          never_lifts_off("a6", "N never reaches 0: no lift-off", a)};
+}
+
+std::vector<ClaimCheck> case_b_claims(const RunResult* a, const RunResult* b, const NarrativeRules& rules) {
+  return {quickly_vertical("b1", "the axis also quickly becomes vertical", b, rules),
+          spins_much_longer(a, b, rules),
+          tilts_to_plateau("b3", "then the axis drops sharply to some angle", b),
+          oscillates_down(a, b, rules),
+          motion_stops("b5", "the motion stops", b)};
+}
+
+std::vector<ClaimCheck> case_c_claims(const RunResult* a, const RunResult* cc, const NarrativeRules& rules) {
+  std::vector<ClaimCheck> out = rises_toward_lowest(cc);
+  out.push_back(settles_at_case_a_angle(a, cc, rules));
+  out.push_back(ends_as_case_a(a, cc, rules));
+  out.push_back(lifts_off_while_rising(cc, rules));
+  return out;
+}
+
+void append(std::vector<ClaimCheck>& out, std::vector<ClaimCheck> more) {
+  out.insert(out.end(), std::make_move_iterator(more.begin()), std::make_move_iterator(more.end()));
+}
+
 }  // namespace
 
 std::string_view to_string(Verdict v) {
@@ -214,128 +371,9 @@ std::string_view to_string(Verdict v) {
 
 std::vector<ClaimCheck> check_narrative(const CaseRuns& runs, const NarrativeRules& rules) {
   std::vector<ClaimCheck> out;
-  const RunResult* a = runs.a;
-  const RunResult* b = runs.b;
-  const RunResult* cc = runs.c;
-
-  if (a) {
-    out.push_back(quickly_vertical("a1", "the axis quickly becomes vertical", a, rules));
-    ClaimCheck a2 = claim("a2", "it spins about the vertical only briefly");
-    if (!has_vertical_spin(a)) {
-      set(a2, Verdict::not_measurable, "no vertical spin (see a1)");
-    } else {
-      const double d = spin_duration(a);
-      set(a2, d <= rules.quick_fraction * a->features.t_final ? Verdict::holds : Verdict::fails,
-          g3(d) + " s (" + percent(d, a->features.t_final) + "); |gamma3| > 0.99 for " + g3(near_duration(a)) + " s");
-    }
-    out.push_back(a2);
-    out.push_back(tilts_to_plateau("a3", "then the axis tilts fairly fast to some angle", a));
-    out.push_back(ends_in_equilibrium("a4", "then it sinks smoothly to an equilibrium position", a, rules));
-    out.push_back(motion_stops("a5", "the velocities enter the stagnation region and the motion stops", a));
-    out.push_back(never_lifts_off("a6", "N never reaches 0: no lift-off", a));
-  }
-  if (b) {
-    out.push_back(quickly_vertical("b1", "the axis also quickly becomes vertical", b, rules));
-    ClaimCheck b2 = claim("b2", "it spins about the vertical much longer than in case a");
-    if (!has_vertical_spin(b) || !has_vertical_spin(a)) {
-      std::string why = !has_vertical_spin(b) ? "no vertical spin in case b" : "no vertical spin in case a";
-      if (a && b && a->executed && b->executed && a->features.near_vertical.left && b->features.near_vertical.left) {
-        const double ratio = near_duration(b) / near_duration(a);
-        set(b2, ratio >= rules.much_longer ? Verdict::partly : Verdict::fails,
-            why + " (0.999); |gamma3| > 0.99 for " + g3(near_duration(b)) + " s vs " + g3(near_duration(a)) +
-                " s in case a (x" + f(ratio, 2) + ")");
-      } else {
-        set(b2, Verdict::not_measurable, why);
-      }
-    } else {
-      const double ratio = spin_duration(b) / spin_duration(a);
-      const double near_ratio = near_duration(b) / near_duration(a);
-      const std::string e = g3(spin_duration(b)) + " s vs " + g3(spin_duration(a)) + " s in case a (x" + f(ratio, 2) +
-                            "); |gamma3| > 0.99: " + g3(near_duration(b)) + " s vs " + g3(near_duration(a)) +
-                            " s (x" + f(near_ratio, 2) + ")";
-      const Verdict v = ratio >= rules.much_longer
-                            ? Verdict::holds
-                            : (near_ratio >= rules.much_longer ? Verdict::partly : Verdict::fails);
-      set(b2, v, e);
-    }
-    out.push_back(b2);
-    out.push_back(tilts_to_plateau("b3", "then the axis drops sharply to some angle", b));
-    ClaimCheck b4 = claim("b4", "then it oscillates down to equilibrium (case a: smoothly)");
-    if (cut_short(b) || !b->ended_normally() || !std::isfinite(b->features.descent_oscillation)) {
-      set(b4, Verdict::not_measurable, cut_short(b) || !b->ended_normally() ? stopped(b) : "no descent after a plateau");
-    } else if (a == nullptr || !a->ended_normally() || !std::isfinite(a->features.descent_oscillation)) {
-      set(b4, Verdict::not_measurable,
-          "peak-to-peak " + f(b->features.descent_oscillation, 3) + "; case a has no descent to compare");
-    } else {
-      const double ob = b->features.descent_oscillation;
-      const double oa = a->features.descent_oscillation;
-      std::string e = "gamma3 swings " + f(ob, 3) + " peak-to-peak about its 1-s mean vs " + f(oa, 3) +
-                      " in case a; ends at " + final_position(b);
-      set(b4, ob >= rules.oscillation_factor * oa && b->stagnated() ? Verdict::holds : Verdict::fails, e);
-    }
-    out.push_back(b4);
-    out.push_back(motion_stops("b5", "the motion stops", b));
-  }
-  if (cc) {
-    const Plateau& p = cc->features.plateau;
-    ClaimCheck c1 = claim("c1", "the axis rises toward the position with the lowest centre of mass");
-    ClaimCheck c2 = claim("c2", "without reaching it");
-    if (cut_short(cc) || !p.found) {
-      const bool measurable = !cut_short(cc) && cc->ended_normally();
-      const std::string why = measurable ? "no plateau: the axis does not settle" : stopped(cc) + " before a plateau";
-      set(c1, measurable ? Verdict::fails : Verdict::not_measurable, why);
-      set(c2, Verdict::not_measurable, why);
-    } else {
-      const int dir = p.gamma3 > cc->features.gamma3_initial ? 1 : -1;
-      const std::string e = "gamma3 " + f(cc->features.gamma3_initial, 3) + " -> " + f(p.gamma3, 3) + " by t = " +
-                            g3(p.t_start) + " s, toward " + pole_name(dir) + "; lowest centre of mass at " +
-                            pole_name(cc->low_pole);
-      set(c1, dir == cc->low_pole ? Verdict::holds : Verdict::fails, e);
-      const bool reached = cc->features.rise_extreme > cc->thresholds.vertical;
-      set(c2, reached ? Verdict::fails : Verdict::holds,
-          "closest approach before the plateau: gamma3 = " + f(dir * cc->features.rise_extreme, 3));
-    }
-    out.push_back(c1);
-    out.push_back(c2);
-
-    ClaimCheck c3 = claim("c3", "it settles at the angle case a reaches after its vertical spin");
-    if (cut_short(cc) || !p.found || a == nullptr || cut_short(a) || !a->features.plateau.found) {
-      set(c3, Verdict::not_measurable,
-          cut_short(cc) ? stopped(cc) : (!p.found ? "no plateau in case c" : "no plateau in case a to compare"));
-    } else {
-      const double da = a->features.plateau.tilt_deg();
-      const double dc = p.tilt_deg();
-      set(c3, std::abs(dc - da) <= rules.same_angle_deg ? Verdict::holds : Verdict::fails,
-          f(dc, 1) + " deg vs " + f(da, 1) + " deg in case a");
-    }
-    out.push_back(c3);
-
-    ClaimCheck c4 = claim("c4", "then it moves as in case a (same final position)");
-    if (cut_short(cc) || !cc->ended_normally() || a == nullptr || !a->ended_normally()) {
-      set(c4, Verdict::not_measurable, !cc->ended_normally() ? stopped(cc) : "case a " + stopped(a));
-    } else {
-      const bool same = (cc->features.gamma3_final_mean >= 0.0) == (a->features.gamma3_final_mean >= 0.0) &&
-                        on_pole(cc, rules) >= 0 && on_pole(a, rules) >= 0;
-      set(c4, same && cc->stagnated() ? Verdict::holds : Verdict::fails,
-          "ends at " + final_position(cc) + " (case a: <gamma3> = " + f(a->features.gamma3_final_mean, 3) + ")");
-    }
-    out.push_back(c4);
-
-    ClaimCheck c5 = claim("c5", "a series of lift-offs while the axis rises");
-    if (cc == nullptr || !cc->executed) {
-      set(c5, Verdict::not_measurable, stopped(cc));
-    } else {
-      const long n = cc->features.sampled_liftoffs_before_plateau;
-      const std::string upto = p.found ? "before the plateau (t < " + g3(p.t_start) + " s)" : "in the run";
-      std::string e = std::to_string(n) + " lift-offs seen in the samples " + upto + "; " +
-                      std::to_string(cc->summary.liftoffs) + " in the whole run (every step)";
-      const Verdict v = n >= rules.series_of_liftoffs ? Verdict::holds
-                                                      : (cut_short(cc, 1.0) ? Verdict::not_measurable : Verdict::fails);
-      if (!cc->ended_normally()) e += "; " + stopped(cc);
-      set(c5, v, e);
-    }
-    out.push_back(c5);
-  }
+  if (runs.a) append(out, case_a_claims(runs.a, rules));
+  if (runs.b) append(out, case_b_claims(runs.a, runs.b, rules));
+  if (runs.c) append(out, case_c_claims(runs.a, runs.c, rules));
   return out;
 }
 

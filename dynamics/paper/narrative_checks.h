@@ -1,5 +1,5 @@
 #pragma once
-// The paper's account of its experiments (section 2; model-notes §4) as a list of checkable
+// The paper's account of its experiments (section 2; docs/model.md §6) as a list of checkable
 // claims, each judged on measured features with a stated rule and the numbers behind it. The
 // rules turn the paper's words into thresholds; they are choices, named here and in
 // docs/experiments.md, and never tuned to make a claim hold.

@@ -1,5 +1,5 @@
 #pragma once
-// The features of one run that section 2 of the paper describes (model-notes §4), measured on the
+// The features of one run that section 2 of the paper describes (docs/model.md §6), measured on the
 // sampled gamma3 (the cosine of the nutation angle) and contact of a RunSeries. Two centred moving
 // averages of gamma3 are used: <gamma3>_1 over `smoothing_window` (1 s) removes the nutation
 // (~2-20 Hz in these runs); <gamma3>_5 over `plateau_window` (5 s) also removes the slower swings
@@ -31,7 +31,7 @@
 namespace frictionlab::dynamics::paper {
 
 struct FeatureThresholds {
-  double vertical = 0.999;        ///< |gamma3| above: the axis is vertical (the issue's definition)
+  double vertical = 0.999;        ///< |gamma3| above: the axis is vertical (2.6 deg)
   double near_vertical = 0.99;    ///< |gamma3| below (moving average): the axis has left the vertical
   double smoothing_window = 1.0;  ///< s, width of the moving average <gamma3>_1 (removes the nutation)
   double plateau_window = 5.0;    ///< s, width of the moving average <gamma3>_5 (plateau detection)

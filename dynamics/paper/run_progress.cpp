@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "friction/support/number_format.h"
+
 namespace frictionlab::dynamics::paper {
 namespace {
 
@@ -47,9 +49,7 @@ void RunProgress::finished(int slot, const std::string& line) {
 }
 
 std::string RunProgress::counter() const {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "[%d/%d done] ", done_, total_);
-  return buf;
+  return "[" + std::to_string(done_) + "/" + std::to_string(total_) + " done] ";
 }
 
 void RunProgress::print_line(const std::string& line) {
@@ -66,14 +66,11 @@ void RunProgress::clear_status() {
 
 void RunProgress::draw_status() {
   const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-  char head[64];
-  std::snprintf(head, sizeof head, "%d/%d done, %.0f s |", done_, total_, elapsed);
-  std::string line = head;
+  std::string line = std::to_string(done_) + "/" + std::to_string(total_) + " done, " + support::fixed(elapsed, 0) + " s |";
   for (const Slot& s : slots_) {
     if (!s.busy) continue;
-    char buf[128];
-    std::snprintf(buf, sizeof buf, " %s t=%.4g/%.4g s |", s.name.c_str(), s.t.load(std::memory_order_relaxed), s.t_end);
-    line += buf;
+    line += " " + s.name + " t=" + support::significant(s.t.load(std::memory_order_relaxed), 4) + "/" +
+            support::significant(s.t_end, 4) + " s |";
   }
   if (line.size() > kStatusWidth) line.resize(kStatusWidth);
   std::fprintf(out_, "\r\033[K%s", line.c_str());
