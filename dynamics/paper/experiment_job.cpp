@@ -35,7 +35,7 @@ std::string initial_description(const RunSpec& spec) {
 std::vector<FigureGroup> figure_groups(const std::vector<RunResult>& results) {
   std::vector<FigureGroup> groups;
   for (const auto& r : results) {
-    if (r.spec.baseline || !r.executed) continue;
+    if (!r.executed) continue;
     auto it = std::find_if(groups.begin(), groups.end(),
                            [&](const FigureGroup& g) { return g.egg == r.spec.egg && g.case_id == r.spec.case_id; });
     if (it == groups.end()) {
@@ -45,9 +45,11 @@ std::vector<FigureGroup> figure_groups(const std::vector<RunResult>& results) {
     FigureRun fr;
     fr.label = r.spec.label;
     fr.stem = r.spec.group() + "-" + r.spec.label;
+    fr.baseline = r.spec.baseline;
     fr.stopped_early = !r.ended_normally();
+    fr.t_final = r.summary.t_final;
     fr.ranges = r.figure_ranges;
-    if (fr.stopped_early) fr.note = std::string(to_string(r.summary.reason)) + " at t = " + short_num(r.summary.t_final) + " s";
+    if (fr.stopped_early) fr.stop = std::string(to_string(r.summary.reason)) + " at t = " + short_num(r.summary.t_final) + " s";
     it->runs.push_back(fr);
   }
   return groups;

@@ -3,10 +3,11 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
 #include <map>
 #include <sstream>
-#include <stdexcept>
 
+#include "dynamics/paper/experiment_plan.h"
 #include "dynamics/paper/figure_data.h"
 #include "friction/support/checked_output.h"
 #include "friction/support/gnuplot.h"
@@ -15,39 +16,69 @@
 namespace frictionlab::dynamics::paper {
 namespace {
 
-// libgd's PNG (not pngcairo): no antialiasing, but a third of the file size for these noisy curves.
-constexpr const char* kTerminal = "set encoding utf8\nset terminal png truecolor enhanced size 1200,980 font 'DejaVuSans,10'";
-constexpr const char* kBand = "set style fill transparent solid 0.15 noborder";
-constexpr double kAxisHeadroom = 1.15;  // the capped axes end this factor above the largest cap
+using support::gnuplot_quoted;
+
+// pngcairo draws dash patterns (libgd's png draws every line solid).
+constexpr const char* kFig3Terminal =
+    "set encoding utf8\nset terminal pngcairo enhanced size 1200,1000 font 'DejaVuSans,10'";
+constexpr const char* kFig2Terminal =
+    "set encoding utf8\nset terminal pngcairo enhanced size 1800,660 font 'DejaVuSans,11'";
+// The key, across the top of the figure (drawn with the first panel).
+constexpr const char* kKey =
+    "set key at screen 0.5,0.955 center top horizontal maxcols 5 font ',10' samplen 4 spacing 1.1 width -3\n";
+constexpr const char* kFig2Key =
+    "set key at screen 0.5,0.905 center top horizontal maxcols 5 font ',10' samplen 4 spacing 1.1 width -3\n";
+constexpr const char* kBand = "set style fill transparent solid 0.13 noborder";
+// Values outside an axis are drawn at its edge (a log axis cannot show the zeros of a body in the
+// air; a stop beyond the axis is still marked).
+constexpr const char* kClip = "clip(y, lo, hi) = y < lo ? lo : (y > hi ? hi : y)";
+constexpr double kLinearHeadroom = 1.05;  // a linear capped axis ends this factor above the cap
+constexpr double kLogHeadroom = 1.5;      // a log axis ends this factor above the cap ...
+constexpr double kLogDecades = 4.0;       // ... and spans this many decades
 
 enum class Cap { none, force, moment, major, n_over_mg };
+enum class Axis { fixed, linear, log };
 
 struct Panel {
-  int lo;             // min column in .dat
-  int hi;             // max column
-  int mean;           // mean column
+  int lo;             // band bottom column in .dat
+  int hi;             // band top column
+  int mean;           // line column
   int end;            // column in .end.dat
   const char* label;  // y axis label, with unit
+  Axis axis;
   Cap cap;
-  const char* range;  // fixed y range, when not capped
+  double fixed_lo, fixed_hi;  // the range of a fixed axis
 };
 
 constexpr std::array<Panel, 6> kPanels = {{
-    {FigureColumns::gamma3_min, FigureColumns::gamma3_max, FigureColumns::gamma3_mean, EndColumns::gamma3, "γ_3 = cos(nutation angle)",
-     Cap::none, "[-1.05:1.05]"},
-    {FigureColumns::force_min, FigureColumns::force_max, FigureColumns::force_mean, EndColumns::force, "|F|, friction force (N)", Cap::force, ""},
-    {FigureColumns::moment_min, FigureColumns::moment_max, FigureColumns::moment_mean, EndColumns::moment, "|M|, friction moment (N mm)",
-     Cap::moment, ""},
-    {FigureColumns::major_min, FigureColumns::major_max, FigureColumns::major_mean, EndColumns::major, "a, major semi-axis of the patch (mm)",
-     Cap::major, ""},
-    {FigureColumns::ratio_min, FigureColumns::ratio_max, FigureColumns::ratio_mean, EndColumns::ratio, "b/a, axis ratio of the patch", Cap::none,
-     "[0:1.05]"},
-    {FigureColumns::n_min, FigureColumns::n_max, FigureColumns::n_mean, EndColumns::n, "N/(m g)", Cap::n_over_mg, ""},
+    {FigureColumns::gamma3_lo, FigureColumns::gamma3_hi, FigureColumns::gamma3_mean, EndColumns::gamma3,
+     "γ_3 = cos(nutation angle)", Axis::fixed, Cap::none, -1.05, 1.05},
+    {FigureColumns::force_lo, FigureColumns::force_hi, FigureColumns::force_mean, EndColumns::force,
+     "|F|, friction force (N), 2-s mean, log scale", Axis::log, Cap::force, 0, 0},
+    {FigureColumns::moment_lo, FigureColumns::moment_hi, FigureColumns::moment_mean, EndColumns::moment,
+     "|M|, friction moment (N mm), 2-s mean, log scale", Axis::log, Cap::moment, 0, 0},
+    {FigureColumns::major_lo, FigureColumns::major_hi, FigureColumns::major_mean, EndColumns::major,
+     "a, major semi-axis (mm), 2-s mean", Axis::linear, Cap::major, 0, 0},
+    {FigureColumns::ratio_lo, FigureColumns::ratio_hi, FigureColumns::ratio_mean, EndColumns::ratio,
+     "b/a, axis ratio of the patch", Axis::fixed, Cap::none, 0.0, 1.05},
+    {FigureColumns::n_lo, FigureColumns::n_hi, FigureColumns::n_mean, EndColumns::n, "N/(m g), 2-s mean, log scale",
+     Axis::log, Cap::n_over_mg, 0, 0},
 }};
 
-using support::gnuplot_quoted;
+// Eight patterns that stay apart in grayscale: solid, dashed, dotted, dash-dot, long dashes (the
+// fifth run: with the four default laws, the baseline), dash-dot-dot, dot-long dash, long
+// dash-three dots.
+constexpr std::array<const char*, 8> kDashes = {"1", "2", "3", "4", "(28,7)", "5", "(4,6,16,6)", "(16,5,3,5,3,5,3,5)"};
 
-std::string title_of(const FigureRun& r) { return r.stopped_early ? r.label + " (" + r.note + ")" : r.label; }
+std::string number(double x) { return support::significant(x, 4); }
+
+// Key entries stay short: a panel of fig. 2 is a third of the width, and the key must fit in it.
+std::string title_of(const FigureRun& r) {
+  std::string t = r.label;
+  if (r.baseline) t += " (baseline)";
+  if (r.stopped_early) t += " (× = stop)";
+  return t;
+}
 
 double cap_of(const AxisCaps& c, Cap which) {
   switch (which) {
@@ -60,8 +91,8 @@ double cap_of(const AxisCaps& c, Cap which) {
   return 0.0;
 }
 
-// The top of a capped axis: over the runs that ended normally (all runs if none did).
-double axis_top(const FigureGroup& g, Cap which, bool early) {
+// The largest cap of the runs that ended normally (of all runs if none did); 1 if none is positive.
+double largest_cap(const FigureGroup& g, Cap which, bool early) {
   double top = 0.0;
   for (const bool normal_only : {true, false}) {
     for (const auto& r : g.runs) {
@@ -71,67 +102,111 @@ double axis_top(const FigureGroup& g, Cap which, bool early) {
     }
     if (top > 0.0) break;
   }
-  return top > 0.0 ? kAxisHeadroom * top : 1.0;
+  return top > 0.0 ? top : 1.0;
 }
 
-std::string number(double x) { return support::significant(x, 4); }
+struct Range {
+  double lo, hi;
+};
 
-// The plot command of one panel: per run a band (min-max per bin) and its mean line, and a cross
-// where an early-stopped run stopped.
-std::string plot_command(const FigureGroup& g, const std::string& kind, int x_col, int lo, int hi, int mean,
-                         int end_x, int end_y, bool with_titles, bool bands) {
-  std::string cmd = "plot ";
+Range axis_range(const FigureGroup& g, const Panel& p, bool early) {
+  switch (p.axis) {
+    case Axis::fixed: return {p.fixed_lo, p.fixed_hi};
+    case Axis::linear: return {0.0, kLinearHeadroom * largest_cap(g, p.cap, early)};
+    case Axis::log: {
+      const double top = kLogHeadroom * largest_cap(g, p.cap, early);
+      return {top * std::pow(10.0, -kLogDecades), top};
+    }
+  }
+  return {0.0, 1.0};
+}
+
+std::string clipped(int column, const Range& r) {
+  return "(clip($" + std::to_string(column) + ", " + number(r.lo) + ", " + number(r.hi) + "))";
+}
+
+struct Columns {
+  int x, lo, hi, mean, end_x, end_y;
+};
+
+// Where the label of a stop goes: to the right of its cross, or to its left (near the right edge).
+enum class LabelSide { right, left };
+
+// Stops in the right part of a time axis ending at `t_axis` are labelled on their left.
+LabelSide side_on_time_axis(const FigureRun& r, double t_axis) {
+  return r.t_final > 0.6 * t_axis ? LabelSide::left : LabelSide::right;
+}
+
+// The plot command of one panel: the bands of every run first, then the lines, then a cross and a
+// label where each early-stopped run stopped.
+std::string plot_command(const FigureGroup& g, const std::string& kind, const Columns& c, const Range& y,
+                         bool with_titles, const std::function<LabelSide(const FigureRun&)>& label_side) {
+  std::vector<std::string> bands, lines, stops;
+  const std::string x = std::to_string(c.x);
   for (std::size_t i = 0; i < g.runs.size(); ++i) {
     const FigureRun& r = g.runs[i];
-    const std::string colour = gnuplot_quoted(law_colour(r.label, i));
+    const LineStyle style = line_style(r, i);
+    const std::string colour = gnuplot_quoted(style.colour);
     const std::string data = gnuplot_quoted("data/" + r.stem + "." + kind + ".dat");
-    const std::string x = std::to_string(x_col);
-    if (i > 0) cmd += ", \\\n     ";
-    if (bands && !r.stopped_early)  // a run stopped at a pole has bins of ~1e9 N: no band
-      cmd += data + " using " + x + ":" + std::to_string(lo) + ":" + std::to_string(hi) +
-             " with filledcurves lc rgb " + colour + " notitle, \\\n     ";
-    cmd += data + " using " + x + ":" + std::to_string(mean) + " with lines lw 1.1 lc rgb " + colour +
-           (with_titles ? " title " + gnuplot_quoted(title_of(r)) : " notitle");
+    if (!r.stopped_early)  // near a pole the bins are meaningless: no band
+      bands.push_back(data + " using " + x + ":" + clipped(c.lo, y) + ":" + clipped(c.hi, y) +
+                      " with filledcurves lc rgb " + colour + " notitle");
+    lines.push_back(data + " using " + x + ":" + clipped(c.mean, y) + " with lines lw " +
+                    (i == 0 ? "1.6" : "1.4") + " dt " + style.dash + " lc rgb " + colour +
+                    (with_titles ? " title " + gnuplot_quoted(title_of(r)) : " notitle"));
     if (r.stopped_early) {
-      cmd += ", \\\n     " + gnuplot_quoted("data/" + r.stem + ".end.dat") + " using " + std::to_string(end_x) + ":" +
-             std::to_string(end_y) + " with points pt 2 ps 2.5 lw 2.5 lc rgb " + colour + " notitle";
+      const std::string end = gnuplot_quoted("data/" + r.stem + ".end.dat") + " using " + std::to_string(c.end_x) + ":" +
+                              clipped(c.end_y, y);
+      stops.push_back(end + " with points pt 2 ps 2.5 lw 2 lc rgb " + colour + " notitle");
+      const bool left = label_side(r) == LabelSide::left;
+      stops.push_back(end + ":(" + gnuplot_quoted(r.label + ": " + r.stop) + ") with labels " +
+                      (left ? "right offset -1.5,0.8" : "left offset 1.5,0.8") + " font ',9' tc rgb " + colour +
+                      " notitle");
+    }
+  }
+  std::string cmd = "plot ";
+  bool first = true;
+  for (const auto* list : {&bands, &lines, &stops}) {
+    for (const auto& e : *list) {
+      cmd += (first ? "" : ", \\\n     ") + e;
+      first = false;
     }
   }
   return cmd + "\n";
 }
 
-void write_file(const std::filesystem::path& p, const std::string& text) { support::write_file_atomically(p, text); }
+std::string axis_settings(const Panel& panel, const Range& y) {
+  std::string s = "set ylabel " + gnuplot_quoted(panel.label) + "\n";
+  s += panel.axis == Axis::log ? "set logscale y\n" : "unset logscale y\n";
+  return s + "set yrange [" + number(y.lo) + ":" + number(y.hi) + "]\n";
+}
 
 std::string fig3(const FigureGroup& g, bool early) {
   const std::string kind = early ? "early" : "full";
   const std::string stem = "fig3-" + g.egg + "-" + g.case_id + (early ? "-early" : "");
   std::ostringstream s;
   s << "# " << stem << ".png: the paper's fig. 3 quantities against time, " << g.egg << ", case " << g.case_id
-    << (early ? " (first seconds)" : "") << ".\n# Lines: the mean of each time bin (data/*." << kind << ".dat)"
-    << (early ? "" : "; bands: its min-max") << "; the axes of |F|, |M|, a, N/(m g) end 15 % above the largest bin mean,\n"
-    << "# cutting the bands of the bouncing phases. Regenerate: gnuplot " << stem << ".gp\n"
-    << kTerminal << "\nset output " << gnuplot_quoted(stem + ".png") << "\n"
-    << kBand << "\nset grid\nset xlabel 't (s)'\nset datafile missing 'NaN'\n";
+    << (early ? " (first seconds)" : "") << ".\n"
+    << "# Lines: means (gamma3, b/a: of each time bin; |F|, |M|, a, N: over 2 s around it) from data/*." << kind
+    << ".dat; bands: 5-95 % quantiles.\n# Regenerate: gnuplot " << stem << ".gp\n"
+    << kFig3Terminal << "\nset output " << gnuplot_quoted(stem + ".png") << "\n"
+    << kBand << "\n" << kClip << "\nset grid\nset xlabel 't (s)'\nset format y '%g'\nset datafile missing 'NaN'\n";
   if (early) s << "set xrange [0:" << kEarlyWindow << "]\n";
-  s << "set multiplot layout 3,2 margins 0.07,0.98,0.05,0.895 spacing 0.08,0.07 title "
+  double t_axis = early ? kEarlyWindow : 0.0;
+  if (!early)
+    for (const auto& r : g.runs) t_axis = std::max(t_axis, r.t_final);
+  const auto label_side = [t_axis](const FigureRun& r) { return side_on_time_axis(r, t_axis); };
+  s << "set multiplot layout 3,2 margins 0.07,0.98,0.05,0.88 spacing 0.08,0.07 title "
     << gnuplot_quoted(g.egg + ", case " + g.case_id + ": " + g.description +
-              (early ? " (first " + std::to_string(static_cast<int>(kEarlyWindow)) + " s)" : ""))
+                      (early ? " (first " + std::to_string(static_cast<int>(kEarlyWindow)) + " s)" : ""))
     << " font ',13'\n";
   for (std::size_t p = 0; p < kPanels.size(); ++p) {
     const Panel& panel = kPanels[p];
-    if (p == 0) {
-      s << "set key at screen 0.5,0.958 center top vertical font ',10' samplen 2 spacing 0.9\n";
-    } else {
-      s << "unset key\n";
-    }
-    if (panel.cap == Cap::none) {
-      s << "set ylabel " << gnuplot_quoted(panel.label) << "\nset yrange " << panel.range << "\n";
-    } else {
-      s << "set ylabel " << gnuplot_quoted(std::string(panel.label)) << "\nset yrange [0:"
-        << number(axis_top(g, panel.cap, early)) << "]\n";
-    }
-    s << plot_command(g, kind, FigureColumns::t, panel.lo, panel.hi, panel.mean, EndColumns::t, panel.end, p == 0,
-                      !early);
+    s << (p == 0 ? kKey : "unset key\n");
+    const Range y = axis_range(g, panel, early);
+    s << axis_settings(panel, y)
+      << plot_command(g, kind, {FigureColumns::t, panel.lo, panel.hi, panel.mean, EndColumns::t, panel.end}, y, p == 0,
+                      label_side);
   }
   s << "unset multiplot\n";
   return s.str();
@@ -139,44 +214,45 @@ std::string fig3(const FigureGroup& g, bool early) {
 
 std::string fig2(const std::string& egg, const std::vector<const FigureGroup*>& groups) {
   const std::string stem = "fig2-" + egg;
+  const Range y{-1.05, 1.05};
   std::ostringstream s;
-  s << "# " << stem << ".png: the paper's fig. 2, gamma3 against |omega|^2, " << egg
-    << ", one panel per case.\n# Bands: min-max of gamma3 in each time bin, at the bin's mean |omega|^2 "
-       "(data/*.full.dat). Regenerate: gnuplot "
-    << stem << ".gp\n"
-    << "set encoding utf8\nset terminal png truecolor enhanced size 1800,620 font 'DejaVuSans,11'\nset output "
-    << gnuplot_quoted(stem + ".png")
-    << "\n"
-    << kBand << "\nset grid\n"
+  s << "# " << stem << ".png: the paper's fig. 2, gamma3 against |omega|^2, " << egg << ", one panel per case.\n"
+    << "# Lines: the mean gamma3 of each time bin at the bin's mean |omega|^2; bands: 5-95 % quantiles of gamma3\n"
+    << "# (data/*.full.dat). Regenerate: gnuplot " << stem << ".gp\n"
+    << kFig2Terminal << "\nset output " << gnuplot_quoted(stem + ".png") << "\n"
+    << kBand << "\n" << kClip << "\nset grid\nset datafile missing 'NaN'\n"
     << "set logscale x\nset format x '10^{%T}'\nset xlabel '|ω|^2 (1/s^2), log scale; time runs right to left'\n"
     << "set ylabel 'γ_3 = cos(nutation angle)'\nset yrange [-1.05:1.05]\n"
-    << "set multiplot layout 1," << groups.size() << " margins 0.05,0.98,0.13,0.76 spacing 0.05,0 title "
+    << "set multiplot layout 1," << groups.size() << " margins 0.05,0.98,0.12,0.74 spacing 0.05,0 title "
     << gnuplot_quoted(egg + ": the paper's fig. 2") << " font ',13'\n";
   for (const FigureGroup* g : groups) {
     s << "set title " << gnuplot_quoted("case " + g->case_id + ": " + g->description) << "\n";
-    if (g == groups.front()) {
-      s << "set key at screen 0.5,0.9 center top vertical font ',10' samplen 2 spacing 0.9\n";
-    } else {
-      s << "unset key\n";
-    }
-    s << plot_command(*g, "full", FigureColumns::omega_sq, FigureColumns::gamma3_min, FigureColumns::gamma3_max,
-                      FigureColumns::gamma3_mean, EndColumns::omega_sq, EndColumns::gamma3, g == groups.front(), true);
+    s << (g == groups.front() ? kFig2Key : "unset key\n");
+    s << plot_command(*g, "full",
+                      {FigureColumns::omega_sq, FigureColumns::gamma3_lo, FigureColumns::gamma3_hi,
+                       FigureColumns::gamma3_mean, EndColumns::omega_sq, EndColumns::gamma3},
+                      y, g == groups.front(), [](const FigureRun&) { return LabelSide::left; });
   }
   s << "unset multiplot\n";
   return s.str();
 }
 
-}  // namespace
-
 std::string law_colour(const std::string& law, std::size_t index) {
+  // Okabe-Ito colours, one per registered law.
   static const std::map<std::string, std::string> fixed = {
-      {"exact", "#000000"},          {"pade-reconstructed", "#0072B2"}, {"pade-printed", "#D55E00"},
+      {"exact", "#000000"},           {"pade-reconstructed", "#0072B2"}, {"pade-printed", "#D55E00"},
       {"moller-ellipsoidal", "#009E73"}, {"coulomb-decoupled", "#CC79A7"}, {"pade-printed-minor", "#E69F00"},
       {"exact-reference", "#56B4E9"},
   };
   if (const auto it = fixed.find(law); it != fixed.end()) return it->second;
   static const std::array<const char*, 4> others = {"#999999", "#F0E442", "#882255", "#44AA99"};
   return others[index % others.size()];
+}
+
+}  // namespace
+
+LineStyle line_style(const FigureRun& run, std::size_t index) {
+  return {run.baseline ? std::string("#7F7F7F") : law_colour(run.label, index), kDashes[index % kDashes.size()]};
 }
 
 std::vector<std::string> write_figure_scripts(const std::filesystem::path& plots_dir,
@@ -191,12 +267,12 @@ std::vector<std::string> write_figure_scripts(const std::filesystem::path& plots
     for (const auto& g : groups)
       if (g.egg == egg) of_egg.push_back(&g);
     const std::string name = "fig2-" + egg + ".gp";
-    write_file(plots_dir / name, fig2(egg, of_egg));
+    support::write_file_atomically(plots_dir / name, fig2(egg, of_egg));
     scripts.push_back(name);
     for (const FigureGroup* g : of_egg) {
       for (const bool early : {false, true}) {
         const std::string n3 = "fig3-" + g->egg + "-" + g->case_id + (early ? "-early" : "") + ".gp";
-        write_file(plots_dir / n3, fig3(*g, early));
+        support::write_file_atomically(plots_dir / n3, fig3(*g, early));
         scripts.push_back(n3);
       }
     }

@@ -6,11 +6,19 @@
 //   fig3-<egg>-<case>.png       against time, 3x2: gamma3, |F|, |M|, major semi-axis a, b/a, N/(m g)
 //   fig3-<egg>-<case>-early.png the same over the first kEarlyWindow seconds
 //
-// Each law is the mean of each time bin (a line) over a translucent band of the bin's min-max (the
-// zooms draw the means only: their bands are the bounces' noise and triple the PNG); a run that stopped early (e.g. the printed Padé law at its pole)
-// is marked with a cross where it stopped, and its key entry says why and when. The axes of |F|,
-// |M|, a and N/(m g) end 15 % above the largest bin mean of the runs that ended normally (the
-// bounces' spikes and a pole's blow-up are cut).
+// What each panel draws:
+//   * every run of the group, the baseline (the reference law with tightened tolerances: the
+//     chaos floor) included, as its mean line over a translucent band of 5-95 % quantiles; all
+//     bands are drawn first, so that no band covers a line;
+//   * each run in its own colour AND its own dash pattern (the figures survive grayscale);
+//   * |F|, |M| and N/(m g), dominated by the impacts of the bouncing phases, on log axes (four
+//     decades below 1.5x the highest band top of the runs that ended normally; values below are
+//     drawn at the bottom); a on a linear axis up to 1.05x that top; gamma3 and b/a on fixed axes;
+//   * a run that stopped early (the printed Padé law at its pole) as a cross where it stopped in
+//     THIS panel, labelled with its reason and time (clipped into the axis if off it; the label on
+//     the side of the cross away from the nearer edge: in fig. 2 to its left, as time runs right to
+//     left); no band (its bins near a pole are meaningless); the key says only that the cross marks
+//     its stop.
 
 #include <filesystem>
 #include <string>
@@ -21,11 +29,13 @@
 namespace frictionlab::dynamics::paper {
 
 struct FigureRun {
-  std::string label;   ///< law name (legend)
-  std::string stem;    ///< data files data/<stem>.{full,early,end}.dat
+  std::string label;     ///< law name, or the baseline's label (legend)
+  std::string stem;      ///< data files data/<stem>.{full,early,end}.dat
+  bool baseline = false; ///< the reference law rerun with tolerances x kBaselineToleranceFactor
   bool stopped_early = false;
-  std::string note;    ///< e.g. "stopped: integrator-failure at t = 0.45 s"
-  FigureRanges ranges; ///< its axis caps (figure_data.h)
+  std::string stop;      ///< how and when it stopped, e.g. "law-pole at t = 0.3163 s"
+  double t_final = 0.0;  ///< s, its last sample
+  FigureRanges ranges;   ///< its axis caps (figure_data.h)
 };
 
 struct FigureGroup {
@@ -45,7 +55,12 @@ struct FigureGroup {
 [[nodiscard]] std::vector<std::string> render_figures(const std::filesystem::path& plots_dir,
                                                       const std::vector<std::string>& scripts);
 
-/// The line colour of a law in every figure ("#000000" for exact, ...).
-[[nodiscard]] std::string law_colour(const std::string& law, std::size_t index);
+/// How a run is drawn: its colour (by law, the same in every figure; grey for the baseline) and
+/// its dash pattern (by its place in the group: no two runs of a figure share one).
+struct LineStyle {
+  std::string colour;  ///< "#rrggbb"
+  std::string dash;    ///< gnuplot dashtype: "1" (solid), "2", ..., "(20,6)"
+};
+[[nodiscard]] LineStyle line_style(const FigureRun& run, std::size_t index);
 
 }  // namespace frictionlab::dynamics::paper
