@@ -1,7 +1,9 @@
-// `frictionlab paper --out DIR [--laws L,...] [--eggs E,...] [--cases a,b,c] [--jobs N] [--set key=value]...`:
+// `frictionlab paper --out DIR [--laws L,...] [--eggs E,...] [--cases a,b,c] [--jobs N] [--set key=value]...
+//  [--resume] [--full-trajectories] [--no-baseline] [--no-figures]`:
 // the paper's experiments (section 2 of Munitsyna 2013) with every law, in parallel, with figures,
 // comparisons and a report (docs/experiments.md). Writes DIR/runs/<egg>-<case>/<law>/,
-// DIR/plots/, DIR/experiments.md and CSV tables; progress on stderr, one summary line on stdout.
+// DIR/plots/, DIR/experiments.md and CSV tables; progress on stderr, one summary line on stdout
+// (beginning "paper: INTERRUPTED:" when the job was stopped).
 // Exit code 0 when every run ran (a law stopping early at its pole is a result, not an error) and
 // every figure was drawn; 3 when some run could not run, the job was interrupted or a figure is
 // missing (everything else is still written); 1 for bad input (one line, nothing run).
@@ -17,6 +19,7 @@
 #include "dynamics/paper/experiment_job.h"
 #include "friction/support/errors.h"
 #include "friction/support/interrupt_guard.h"
+#include "friction/support/number_format.h"
 
 namespace frictionlab::cli {
 namespace {
@@ -33,6 +36,8 @@ struct PaperCliOptions {
   std::vector<std::string> set;
   bool no_baseline = false;
   bool no_figures = false;
+  bool full_trajectories = false;
+  bool resume = false;
   std::string command;
 };
 
@@ -58,6 +63,8 @@ void run(const PaperCliOptions& opt) {
   job.log = stderr;
   job.live_status = isatty(STDERR_FILENO) != 0;
   job.command = opt.command;
+  job.trajectory_every = opt.full_trajectories ? 1 : paper::kTrajectoryEvery;
+  job.resume = opt.resume;
 
   paper::JobOutcome outcome;
   {
@@ -70,8 +77,10 @@ void run(const PaperCliOptions& opt) {
   int early = 0;
   for (const auto& r : outcome.results)
     if (r.executed && !r.ended_normally()) ++early;
-  std::printf("paper: %zu runs (%d stopped early, %d not run), %zu figures in %.1f s; wrote %s\n",
-              outcome.results.size(), early, outcome.not_run, outcome.figures.size(), outcome.wall_time,
+  const std::string kept = opt.resume ? "; " + std::to_string(outcome.resumed) + " kept from an earlier job" : "";
+  std::printf("paper: %s%zu runs (%d stopped early, %d not run%s), %zu figures in %s s; wrote %s\n",
+              outcome.interrupted ? "INTERRUPTED: " : "", outcome.results.size(), early, outcome.not_run,
+              kept.c_str(), outcome.figures.size(), support::fixed(outcome.wall_time, 1).c_str(),
               (std::filesystem::path(opt.out) / "experiments.md").c_str());
   if (!opt.no_figures)
     for (const auto& e : outcome.figure_errors) std::fprintf(stderr, "frictionlab: paper: %s\n", e.c_str());
@@ -102,6 +111,11 @@ void register_paper_command(CLI::App& app) {
   cmd->add_flag("--no-baseline", opt->no_baseline,
                 "Skip the reference law rerun with tolerances x0.1 (the chaos floor of the comparison)");
   cmd->add_flag("--no-figures", opt->no_figures, "Write the plot data and gnuplot scripts but do not run gnuplot");
+  cmd->add_flag("--full-trajectories", opt->full_trajectories,
+                "Keep every sample in trajectory.csv (default: every " + std::to_string(paper::kTrajectoryEvery) +
+                    "th, 0.1 s; about 10x the disk)");
+  cmd->add_flag("--resume", opt->resume,
+                "Keep the runs an earlier job in --out completed with the same scenario; redo the others");
   cmd->callback([opt] {
     opt->command = "frictionlab paper";
     for (const auto& [name, value] : std::vector<std::pair<std::string, std::string>>{
@@ -112,6 +126,7 @@ void register_paper_command(CLI::App& app) {
     for (const auto& s : opt->set) opt->command += " --set " + s;
     if (opt->no_baseline) opt->command += " --no-baseline";
     if (opt->no_figures) opt->command += " --no-figures";
+    if (opt->full_trajectories) opt->command += " --full-trajectories";
     run(*opt);
   });
 }

@@ -76,10 +76,13 @@ JobOutcome run_paper_job(const JobOptions& options) {
     ro.plot_data_dir = plots / "data";
     ro.cancel = options.cancel;
     ro.progress = progress.get();
+    ro.trajectory_every = options.trajectory_every;
+    ro.resume = options.resume;
     outcome.results = run_experiments(specs, ro);
   }
   for (const auto& r : outcome.results) {
     if (!r.executed || !r.error.empty()) ++outcome.not_run;
+    if (r.resumed) ++outcome.resumed;
     if (r.executed && r.summary.reason == Termination::interrupted) outcome.interrupted = true;
   }
   if (options.cancel && options.cancel->load()) outcome.interrupted = true;
@@ -107,6 +110,7 @@ JobOutcome run_paper_job(const JobOptions& options) {
   ctx.wall_time = outcome.wall_time;
   ctx.figures = outcome.figures;
   ctx.figure_errors = outcome.figure_errors;
+  ctx.interrupted = outcome.interrupted;
   write_report(out, outcome.results, comparisons, verdicts, ctx);
   return outcome;
 }

@@ -9,6 +9,7 @@
 
 #include "dynamics/paper/experiment_plan.h"
 #include "dynamics/paper/experiment_runner.h"
+#include "dynamics/paper/run_record.h"
 
 namespace frictionlab::dynamics::paper {
 
@@ -20,6 +21,10 @@ struct JobOptions {
   bool live_status = false;      ///< also a live status line (stderr is a terminal)
   const std::atomic<bool>* cancel = nullptr;
   std::string command;           ///< the command line, for the report
+  /// trajectory.csv keeps every this-many-th sample and the last (1: every sample;
+  /// dynamics/paper/run_record.h).
+  int trajectory_every = kTrajectoryEvery;
+  bool resume = false;           ///< keep the runs an earlier job completed (experiment_runner.h)
 };
 
 struct JobOutcome {
@@ -27,6 +32,7 @@ struct JobOutcome {
   std::vector<std::string> figures;        ///< PNG names drawn in DIR/plots
   std::vector<std::string> figure_errors;
   int not_run = 0;                         ///< runs that could not run or were skipped
+  int resumed = 0;                         ///< runs kept from an earlier job (resume)
   bool interrupted = false;
   double wall_time = 0.0;                  ///< s
 };

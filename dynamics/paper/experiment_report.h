@@ -19,6 +19,8 @@ inline constexpr double kDivergenceThreshold = 0.05;
 /// The cost table gives each law's wall time over this law's for the same case: the performance
 /// target of the paper job is `exact` within a factor of this law's time (docs/experiments.md §6).
 inline constexpr std::string_view kCostComparisonLaw = "pade-reconstructed";
+/// The factor of that target: case a with `exact` within this many times the comparison law's time.
+inline constexpr double kCostTarget = 1.5;
 
 /// One run against the reference run of its (egg, case).
 struct LawComparison {
@@ -56,6 +58,9 @@ struct ReportContext {
   double wall_time = 0.0;  ///< s, the whole job
   std::vector<std::string> figures;        ///< PNG names in DIR/plots
   std::vector<std::string> figure_errors;  ///< why some are missing
+  /// The job was stopped (Ctrl-C, SIGTERM, SIGHUP) before it finished: the report begins with an
+  /// INTERRUPTED banner saying what ran and how to finish the job (--resume).
+  bool interrupted = false;
 };
 
 /// "Linux 6.1 x86_64, AMD EPYC ... (2 logical cores)".

@@ -1,6 +1,8 @@
 #include "dynamics/paper/feature_json.h"
 
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 namespace frictionlab::dynamics::paper {
 namespace {
@@ -8,6 +10,40 @@ namespace {
 support::Json episode(const VerticalEpisode& e, double t_final) {
   return {{"reached", e.reached}, {"t_reached", e.t_reached}, {"pole", e.pole},
           {"left", e.left},       {"t_left", e.t_left},       {"duration", e.duration(t_final)}};
+}
+
+const support::Json& member(const support::Json& j, const char* key) {
+  if (!j.is_object() || !j.contains(key)) throw std::runtime_error(std::string("features.json: '") + key + "' is missing");
+  return j.at(key);
+}
+
+double number(const support::Json& j, const char* key) {
+  const support::Json& v = member(j, key);
+  if (v.is_null()) return kNaN;
+  if (!v.is_number()) throw std::runtime_error(std::string("features.json: '") + key + "' is not a number");
+  return v.get<double>();
+}
+
+long integer(const support::Json& j, const char* key) {
+  const support::Json& v = member(j, key);
+  if (!v.is_number_integer()) throw std::runtime_error(std::string("features.json: '") + key + "' is not an integer");
+  return v.get<long>();
+}
+
+bool flag(const support::Json& j, const char* key) {
+  const support::Json& v = member(j, key);
+  if (!v.is_boolean()) throw std::runtime_error(std::string("features.json: '") + key + "' is not true or false");
+  return v.get<bool>();
+}
+
+VerticalEpisode episode_from(const support::Json& j) {
+  VerticalEpisode e;
+  e.reached = flag(j, "reached");
+  e.t_reached = number(j, "t_reached");
+  e.pole = static_cast<int>(integer(j, "pole"));
+  e.left = flag(j, "left");
+  e.t_left = number(j, "t_left");
+  return e;
 }
 
 }  // namespace
@@ -45,6 +81,34 @@ support::Json features_json(const RunFeatures& f, const FeatureThresholds& th) {
   j["sampled_liftoffs_before_plateau"] = f.sampled_liftoffs_before_plateau;
   j["last_sampled_liftoff"] = f.last_sampled_liftoff;
   return j;
+}
+
+RunFeatures features_from_json(const support::Json& j) {
+  RunFeatures f;
+  f.t_final = number(j, "t_final");
+  f.gamma3_initial = number(j, "gamma3_initial");
+  f.gamma3_final = number(j, "gamma3_final");
+  f.gamma3_final_mean = number(j, "gamma3_final_mean");
+  f.kinetic_final = number(j, "kinetic_final");
+  f.max_abs_gamma3 = number(j, "max_abs_gamma3");
+  const support::Json& first = member(j, "first_move");
+  f.first_move = static_cast<int>(integer(first, "direction"));
+  f.t_first_move = number(first, "t");
+  f.vertical = episode_from(member(j, "vertical"));
+  f.near_vertical = episode_from(member(j, "near_vertical"));
+  const support::Json& p = member(j, "plateau");
+  f.plateau.found = flag(p, "found");
+  f.plateau.t_from = number(p, "t_from");
+  f.plateau.t_start = number(p, "t_start");
+  f.plateau.gamma3 = number(p, "gamma3");
+  f.plateau.t_end = number(p, "t_end");
+  f.plateau.lasts_to_end = flag(p, "lasts_to_end");
+  f.rise_extreme = number(j, "rise_extreme");
+  f.descent_oscillation = number(j, "descent_oscillation");
+  f.sampled_liftoffs = integer(j, "sampled_liftoffs");
+  f.sampled_liftoffs_before_plateau = integer(j, "sampled_liftoffs_before_plateau");
+  f.last_sampled_liftoff = number(j, "last_sampled_liftoff");
+  return f;
 }
 
 }  // namespace frictionlab::dynamics::paper

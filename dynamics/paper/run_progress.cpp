@@ -48,6 +48,11 @@ void RunProgress::finished(int slot, const std::string& line) {
   print_line(counter() + line);
 }
 
+void RunProgress::note(const std::string& line) {
+  std::lock_guard lock(mutex_);
+  print_line(counter() + line);
+}
+
 std::string RunProgress::counter() const {
   return "[" + std::to_string(done_) + "/" + std::to_string(total_) + " done] ";
 }

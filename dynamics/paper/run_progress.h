@@ -29,6 +29,8 @@ class RunProgress {
   void started(int slot, const std::string& name, double t_end);
   /// Worker `slot` is done; `line` says how (no newline).
   void finished(int slot, const std::string& line);
+  /// A line that is neither a start nor an end (why a run is redone); no newline.
+  void note(const std::string& line);
   /// Where worker `slot` publishes its simulated time (s).
   [[nodiscard]] std::atomic<double>* slot_time(int slot) { return &slots_[static_cast<std::size_t>(slot)].t; }
   /// Stops the status line (also done by the destructor).

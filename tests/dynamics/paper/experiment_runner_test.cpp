@@ -8,7 +8,9 @@
 
 #include <filesystem>
 #include <fstream>
+#include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "dynamics/paper/experiment_plan.h"
 #include "dynamics/scenario.h"
@@ -59,6 +61,46 @@ TEST(PaperExperimentRunner, EachRunsScenarioTomlNamesItsLawAndReproducesIt) {
         << r.name() << ": the rerun of its scenario.toml differs";
   }
   fs::remove_all(out);
+}
+
+std::vector<std::string> lines(const std::string& text) {
+  std::vector<std::string> out;
+  std::size_t pos = 0;
+  while (pos < text.size()) {
+    const std::size_t end = text.find('\n', pos);
+    out.push_back(text.substr(pos, end - pos));
+    if (end == std::string::npos) break;
+    pos = end + 1;
+  }
+  return out;
+}
+
+// A thinned trajectory.csv holds the rerun's rows 0, 10, 20, ... and its last, bit for bit: the
+// output interval does not change the steps, and the rows kept are the samples at those times.
+TEST(PaperExperimentRunner, AThinnedTrajectoryIsEveryTenthRowOfTheRerun) {
+  const fs::path out = scratch("thinned");
+  PlanOptions plan = tiny_plan(out, kScenarios);
+  plan.laws = {"exact"};
+  plan.baseline = false;
+  RunnerOptions options;
+  options.trajectory_every = 10;
+  const auto results = run_experiments(plan_runs(plan), options);
+  ASSERT_EQ(results.size(), 1u);
+  ASSERT_TRUE(results[0].executed && results[0].error.empty()) << results[0].error;
+  const auto thinned = lines(slurp(results[0].spec.out_dir / "trajectory.csv"));
+  const ScenarioRun again = run_scenario(load_scenario(results[0].spec.out_dir / "scenario.toml"), out / "again");
+  const auto full = lines(slurp(again.trajectory_csv));
+  ASSERT_EQ(full.size(), 32u);  // the header and t = 0, 0.001, ..., 0.03
+  ASSERT_EQ(thinned.size(), 5u);  // the header and t = 0, 0.01, 0.02, 0.03
+  EXPECT_EQ(thinned[0], full[0]);
+  for (std::size_t i = 1; i < thinned.size(); ++i) EXPECT_EQ(thinned[i], full[1 + 10 * (i - 1)]) << i;
+  fs::remove_all(out);
+}
+
+TEST(PaperExperimentRunner, ThinningByLessThanOneIsRejected) {
+  RunnerOptions options;
+  options.trajectory_every = 0;
+  EXPECT_THROW((void)run_experiments({}, options), std::invalid_argument);
 }
 
 // The job reads each scenario file once, when it plans: the runs need the files no more.
