@@ -44,7 +44,7 @@ std::vector<FigureGroup> figure_groups(const std::vector<RunResult>& results) {
     }
     FigureRun fr;
     fr.label = r.spec.label;
-    fr.stem = r.spec.group() + "-" + r.spec.label;
+    fr.stem = plot_data_stem(r.spec);
     fr.baseline = r.spec.baseline;
     fr.stopped_early = !r.ended_normally();
     fr.t_final = r.summary.t_final;

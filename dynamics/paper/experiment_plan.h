@@ -24,8 +24,8 @@ namespace frictionlab::dynamics::paper {
 /// The law every other law is compared with along the trajectory.
 inline constexpr std::string_view kReferenceLaw = "exact";
 /// Output interval of the paper's runs, s (the scenario files say 1e-3 s). 100 Hz resolves the
-/// nutation of gamma3 (<= ~20 Hz in these runs) and keeps a 450 s run's CSV near 20 MB; the Hertz
-/// bounce (~49 Hz) is aliased in the CSV, so lift-offs and min N come from the integrator's steps.
+/// nutation of gamma3 (at most 20.1 Hz in these runs: dynamics/paper/nutation_frequency.py); the
+/// Hertz bounce (~49 Hz) is aliased, so lift-offs and min N come from the integrator's steps.
 inline constexpr double kPaperOutputDt = 0.01;
 /// The chaos baseline: the reference law rerun with both tolerances multiplied by this factor.
 /// How far two runs of the same law drift apart is the floor under any law-vs-law difference.

@@ -313,7 +313,8 @@ std::string trajectory_error_row(const RunResult& r, const std::vector<LawCompar
                             spin_share_cell(r) + " | " + fixed_num(r.summary.wall_time, 2) + " | " +
                             std::to_string(r.summary.rhs_calls) + " |\n";
   const std::string final_g3 = fixed_num(r.features.gamma3_final_mean, 3);
-  if (is_reference(r)) return "| " + r.spec.group() + " | **" + r.spec.label + "** | – | – | – | " + final_g3 + " | – | " + works;
+  if (is_reference(r))
+    return "| " + r.spec.group() + " | **" + r.spec.label + "** | – | – | – | " + final_g3 + " | – | " + works;
   const auto it = std::find_if(comparisons.begin(), comparisons.end(), [&](const auto& c) { return c.run == &r; });
   if (it == comparisons.end()) return "";
   return "| " + r.spec.group() + " | " + r.spec.label + (r.ended_normally() ? "" : " (" + reason(r) + ")") + " | " +

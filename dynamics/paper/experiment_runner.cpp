@@ -32,8 +32,6 @@ void take_scenario_facts(RunResult& r) {
   r.low_pole = body.com - body.profile.z_lo() <= body.profile.z_hi() - body.com ? 1 : -1;
 }
 
-std::string stem_of(const RunSpec& spec) { return spec.group() + "-" + spec.label; }
-
 // features.json: the features, their thresholds, and how trajectory.csv was thinned.
 support::Json features_record(const RunResult& r, int every, long rows) {
   support::Json j = features_json(r.features, r.thresholds);
@@ -65,13 +63,13 @@ void run_one(RunResult& r, const RunnerOptions& options, std::atomic<double>* pr
   // Everything is measured on every sample, before trajectory.csv is thinned.
   const RunSeries& s = recorder.series();
   r.features = extract_features(s, r.thresholds);
-  if (!options.plot_data_dir.empty()) r.figure_ranges = write_figure_data(options.plot_data_dir, stem_of(spec), s);
+  if (!options.plot_data_dir.empty()) r.figure_ranges = write_figure_data(options.plot_data_dir, plot_data_stem(spec), s);
   const ComparisonSeries compared =
       thin_series(s.t, s.gamma3, moving_average(s.t, s.gamma3, r.thresholds.smoothing_window), kComparisonEvery);
   write_comparison_series(spec.out_dir / "gamma3.csv", compared);
   // An incomplete trajectory (its output failed) is left as it is.
-  const long rows = run.output_error.empty() ? thin_csv(run.trajectory_csv, options.trajectory_every)
-                                             : csv_data_rows(run.trajectory_csv);
+  const bool thin = options.trajectory_every > 1 && run.output_error.empty();
+  const long rows = thin ? thin_csv(run.trajectory_csv, options.trajectory_every) : csv_data_rows(run.trajectory_csv);
   support::write_file_atomically(spec.out_dir / "features.json",
                                  support::json_text(features_record(r, options.trajectory_every, rows)));
   r.t = compared.t;
@@ -107,6 +105,8 @@ std::string thinning_text(long every) {
 
 }  // namespace
 
+std::string plot_data_stem(const RunSpec& spec) { return spec.group() + "-" + spec.label; }
+
 void RunnerOptions::validate() const {
   thresholds.validate();
   if (trajectory_every < 1)
@@ -140,8 +140,9 @@ std::string keep_finished_run(RunResult& r, const RunnerOptions& options) {
     kept.gamma3 = std::move(compared.gamma3);
     kept.gamma3_smooth = std::move(compared.gamma3_smooth);
     if (!options.plot_data_dir.empty()) {
-      if (!std::filesystem::exists(options.plot_data_dir / (stem_of(spec) + ".end.dat"))) return "its plot data is missing";
-      kept.figure_ranges = read_figure_ranges(options.plot_data_dir, stem_of(spec));
+      if (!std::filesystem::exists(options.plot_data_dir / (plot_data_stem(spec) + ".end.dat")))
+        return "its plot data is missing";
+      kept.figure_ranges = read_figure_ranges(options.plot_data_dir, plot_data_stem(spec));
     }
   } catch (const std::exception& e) {
     return std::string("its record is unreadable (") + e.what() + ")";

@@ -70,6 +70,9 @@ struct RunnerOptions {
   void validate() const;
 };
 
+/// The stem of a run's plot data files: "<egg>-<case>-<label>" (dynamics/paper/figure_data.h).
+[[nodiscard]] std::string plot_data_stem(const RunSpec& spec);
+
 /// The number of worker threads `jobs` asks for (>= 1).
 [[nodiscard]] int worker_count(int jobs);
 

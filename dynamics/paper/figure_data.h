@@ -12,11 +12,11 @@
 //
 //   gamma3, b/a        over the bin's own samples: the band is the nutation of the axis;
 //   |F|, |M|, a, N     over kImpactWindow (2 s) centred on the bin: these are dominated by the
-//                      Hertz impacts of the bouncing phases (milliseconds long, up to ~80 m g, the
-//                      body out of contact 75-95 % of the time), which a 100-Hz sample catches or
-//                      misses at random. The mean over 2 s (~200 samples) is the time average (the
-//                      mean of N is m g while the body hops), a smooth line; the band is the spread
-//                      of the impacts. Out of contact |F| = |M| = a = N = 0, and these zeros count.
+//                      Hertz impacts of the bouncing phases (milliseconds long, tens of m g, the
+//                      body in the air in between), which a 100-Hz sample catches or misses at
+//                      random. The mean over 2 s (~200 samples) is the time average (the mean of N
+//                      is m g while the body hops), a smooth line; the band is the spread of the
+//                      impacts. Out of contact |F| = |M| = a = N = 0, and these zeros count.
 //
 // Empty bins are left out; b/a is undefined (skipped) out of contact.
 

@@ -7,7 +7,6 @@
 #include <map>
 #include <sstream>
 
-#include "dynamics/paper/experiment_plan.h"
 #include "dynamics/paper/figure_data.h"
 #include "friction/support/checked_output.h"
 #include "friction/support/gnuplot.h"

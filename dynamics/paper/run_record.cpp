@@ -52,9 +52,10 @@ std::string text(const support::Json& j, const char* key) {
 
 Eigen::Vector3d vector3(const support::Json& j, const char* key) {
   const support::Json& v = member(j, key);
-  if (!v.is_array() || v.size() != 3) throw std::runtime_error(std::string("summary.json: '") + key + "' is not 3 numbers");
+  if (!v.is_array() || v.size() != 3)
+    throw std::runtime_error(std::string("summary.json: '") + key + "' is not 3 numbers");
   Eigen::Vector3d out;
-  for (int i = 0; i < 3; ++i) out[i] = v[static_cast<std::size_t>(i)].is_null() ? kNaN : v[static_cast<std::size_t>(i)].get<double>();
+  for (std::size_t i = 0; i < 3; ++i) out[static_cast<Eigen::Index>(i)] = v[i].is_null() ? kNaN : v[i].get<double>();
   return out;
 }
 
