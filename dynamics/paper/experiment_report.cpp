@@ -180,10 +180,11 @@ std::string interrupted_banner(const std::vector<RunResult>& results, const Repo
     }
   }
   return "> **INTERRUPTED**: this job was stopped before it finished (Ctrl-C, SIGTERM or SIGHUP). Of its " +
-         std::to_string(results.size()) + " runs, " + std::to_string(ended) + " ran to their end, " +
-         std::to_string(stopped) + " were stopped part way (reason `interrupted`) and " + std::to_string(not_started) +
-         " never started. The tables and figures cover what ran; a claim on a run stopped part way is n/a. `" +
-         context.command + " --resume` finishes the job, keeping the runs that are complete.\n\n";
+         std::to_string(results.size()) + " runs: ran to their end " + std::to_string(ended) +
+         ", stopped part way (reason `interrupted`) " + std::to_string(stopped) + ", never started " +
+         std::to_string(not_started) +
+         ". The tables and figures cover what ran; a claim on a run stopped part way is n/a. `" + context.command +
+         " --resume` finishes the job, keeping the runs that are complete.\n\n";
 }
 
 std::string resumed_note(const std::vector<RunResult>& results) {
