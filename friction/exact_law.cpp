@@ -445,20 +445,43 @@ Result window_integral(double mu, double e2, double p, double q, double rho, dou
     const double C = cphi * u0x + sphi * nx;
     const double S = cphi * u0y + sphi * ny;
     const double L = std::sqrt(C * C + mu2 * S * S);
-    const double den = L * s - (C * p + S * qm);  // |v| |c'| (1 - d.c^) > 0
-    const double inv = 1.0 / (L * den);
+    // 1 + d.c^ (d = v/|v|, c^ = c'/|c'|) without cancellation: as (Ls + v.c')/(Ls) where
+    // v.c' > 0, else as (d x c^)^2/(1 - d.c^), using Lagrange's identity
+    // (Ls)^2 (d x c^)^2 = (v x c')^2 = mu^2 rho^2 sin^2 phi. (Ls - v.c' alone cancels to nothing
+    // where d is nearly along c^, which a slit (mu ~ 1e-9) sees at O(1) angles.)
+    const double Ls = L * s;
+    const double vc = C * p + S * qm;
+    const bool along = vc > 0.0;
+    const double num = along ? Ls + vc : mr2 * sphi * sphi;
+    const double den = along ? Ls : Ls * (Ls - vc);
+    const double inv = 1.0 / (L * den);  // one division per node
     const double iL = inv * den;
     const double D = 1.0 - rho2 * sphi * sphi;
     const double a = w * D * cphi * iL;
     g1 += a * C;
     g2 += a * mu * S;
-    const double one_plus = mr2 * sphi * sphi * inv / s;  // 1 + d.c^ = (d x c^)^2/(1 - d.c^)
+    const double one_plus = num * inv * L;
     h += w * one_plus * D * (s * rho * cphi + L * (rho2 * cphi * cphi + 0.25 * D));
   });
   return {0.75 * rho * g1, 0.75 * rho * g2, 0.75 * h};
 }
 
 }  // namespace
+
+LawPromises ExactLaw::promises() const {
+  LawPromises p;
+  p.F1_in_Omega = Parity::even;
+  p.F2_in_Omega = Parity::even;
+  p.M_in_Omega = Parity::odd;
+  p.pi_periodic_in_psi = true;
+  p.psi_mirror = true;
+  p.dissipative = true;
+  p.bounded = true;
+  p.whole_domain = true;
+  p.exact_pure_spin = true;
+  p.tolerance = kExactLawAccuracy;
+  return p;
+}
 
 FrictionForces ExactLaw::do_evaluate(const ContactInput& in) const {
   const double kN = in.k * in.N;
@@ -469,7 +492,7 @@ FrictionForces ExactLaw::do_evaluate(const ContactInput& in) const {
   }
   const double sign = in.Omega > 0.0 ? 1.0 : -1.0;
   const double mu = std::max(in.b / in.a, kMinAxisRatio);
-  const double s = (in.U / in.a) / std::abs(in.Omega);  // may be +inf: fast-slip branch
+  const double s = slip_ratio(in.U, in.a, in.Omega);  // may be +inf: fast-slip branch
   // A circle is symmetric under rotation: psi = 0 makes F2 = 0 exact.
   const double psi = (mu == 1.0) ? 0.0 : in.psi;
   const double cpsi = std::cos(psi);
@@ -477,7 +500,7 @@ FrictionForces ExactLaw::do_evaluate(const ContactInput& in) const {
   const double e2 = (1.0 - mu) * (1.0 + mu);
 
   if (s > kFastSlipRatio) {
-    // Fast-slip expansion (model notes §1); d3, d4 are the pressure's second moments.
+    // Fast-slip expansion (docs/model.md); d3, d4 are the pressure's second moments.
     const double d3 = e2 * cpsi * cpsi + mu * mu;
     const double d4 = 2.0 * e2 * spsi * cpsi;
     const double is = 1.0 / s;

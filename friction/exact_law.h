@@ -1,6 +1,6 @@
 #pragma once
 // The exact law of coupled sliding and spinning friction over an elliptic Hertz patch
-// (model notes §1): the integrals of the local Coulomb traction over the contact ellipse,
+// (docs/model.md): the integrals of the local Coulomb traction over the contact ellipse,
 // evaluated to better than 1e-13 k N (forces) and 1e-13 k N a (moment); measured: 3e-15 against
 // 30-digit values, 5e-14 at worst (docs/exact-law.md §2). About 120 ns per call (median).
 //
@@ -34,14 +34,18 @@
 
 namespace frictionlab::friction {
 
-/// Exact coupled dry friction over an elliptic Hertz patch, by quadrature (model notes §1).
+/// The accuracy ExactLaw promises, per kN (forces) and per kNa (moment), for every valid input.
+inline constexpr double kExactLawAccuracy = 1e-12;
+
+/// Exact coupled dry friction over an elliptic Hertz patch, by quadrature (docs/model.md).
 class ExactLaw final : public FrictionLaw {
  public:
   ExactLaw() = default;
 
   [[nodiscard]] std::string_view name() const override { return "exact"; }
+  [[nodiscard]] LawPromises promises() const override;
   [[nodiscard]] std::string_view summary() const override {
-    return "exact integral of Coulomb traction over the elliptic Hertz patch (model notes §1), "
+    return "exact integral of Coulomb traction over the elliptic Hertz patch (docs/model.md), "
            "semi-analytic quadrature, ~1e-13 relative";
   }
 

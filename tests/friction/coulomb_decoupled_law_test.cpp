@@ -101,7 +101,7 @@ TEST(CoulombDecoupledLaw, SymmetriesAndDissipationOnRandomInputs) {
 
 TEST(CoulombDecoupledLaw, BoundsTheExactLawFromAbove) {
   // The decoupled law is exact in the pure limits and, in between, overestimates both resistances:
-  // the exact law has F1 < kN and |M| < M0 whenever U > 0 and Omega != 0 (model-notes §1).
+  // the exact law has F1 < kN and |M| < M0 whenever U > 0 and Omega != 0 (docs/model.md).
   // kExactTol: the exact law's accuracy, ~1e-13 kN.
   constexpr double kExactTol = 1e-12;
   const ExactLaw exact;

@@ -1,4 +1,4 @@
-// Tests of friction/exact_law.h against the facts of model notes §1: closed forms, asymptotics,
+// Tests of friction/exact_law.h against the facts of docs/model.md: closed forms, asymptotics,
 // symmetries, dissipation, limits (at, near and away), and 30-digit spot values.
 
 #include "friction/exact_law.h"
@@ -373,6 +373,28 @@ TEST(ExactLaw, SlenderPatchesStayFiniteAndDissipative) {
     }
     EXPECT_NEAR(eval(make(0.0, mu, 0.7)).M, test::pure_spin_moment(std::max(mu, 1e-12)),
                 kClosedFormTol);
+  }
+}
+
+TEST(ExactLaw, SlitsNearTheMinorAxisStayFiniteAndPhysical) {
+  // A slit (mu ~ 1e-9) with the ICR a few units out along the scaled minor axis sees lines nearly
+  // along the slip at O(1) angles: the window quadrature must not cancel there. First the input
+  // that printed -nan,-nan,inf, then a seeded sweep of the same corner: mu log-uniform in
+  // [1e-12, 1e-6], psi within 1e-14..1e-6 of pi/2, s log-uniform in [1e-3, 1e3].
+  const FrictionForces f = eval(make(0.5, 1e-9, 1.5707963217948966));
+  EXPECT_TRUE(std::isfinite(f.F1) && std::isfinite(f.F2) && std::isfinite(f.M));
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> uni(0.0, 1.0);
+  for (int i = 0; i < 4000; ++i) {
+    const double mu = std::pow(10.0, -12.0 + 6.0 * uni(rng));
+    const double psi = kPi / 2 + (uni(rng) < 0.5 ? -1.0 : 1.0) * std::pow(10.0, -14.0 + 8.0 * uni(rng));
+    const double s = std::pow(10.0, -3.0 + 6.0 * uni(rng));
+    const FrictionForces g = eval(make(s, mu, psi, uni(rng) < 0.5 ? -1.0 : 1.0));
+    ASSERT_TRUE(std::isfinite(g.F1) && std::isfinite(g.F2) && std::isfinite(g.M))
+        << "s = " << s << ", mu = " << mu << ", psi = " << psi;
+    EXPECT_GE(g.F1, 0.0);
+    EXPECT_LE(std::hypot(g.F1, g.F2), 1.0 + kClosedFormTol);
+    EXPECT_LE(std::abs(g.M), test::pure_spin_moment(mu) + kClosedFormTol);
   }
 }
 

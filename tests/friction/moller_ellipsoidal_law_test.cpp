@@ -61,7 +61,7 @@ TEST(MollerEllipsoidalLaw, PureLimitsExactlyNearAndAway) {
 }
 
 TEST(MollerEllipsoidalLaw, CircleSpinTorqueIsTheExactHertzValue) {
-  // For a circle Rb = (3 pi/16) a, the exact pure-spin torque of the Hertz patch (model-notes §1).
+  // For a circle Rb = (3 pi/16) a, the exact pure-spin torque of the Hertz patch (docs/model.md).
   const MollerEllipsoidalLaw law;
   const auto f = law.evaluate({0.0, 5.0, 0.01, 0.01, 0.0, 100.0, 0.2});
   EXPECT_NEAR(f.M, 3.0 * pi / 16.0 * 0.2 * 100.0 * 0.01, kHandTol);
