@@ -9,6 +9,8 @@
 #include <string_view>
 #include <vector>
 
+#include "friction/registry.h"
+
 namespace frictionlab::dynamics::paper {
 
 /// The two readings of the paper's egg (model-notes §4; data/scenarios/<egg>-<case>.toml).
@@ -18,8 +20,8 @@ namespace frictionlab::dynamics::paper {
 /// The laws run by default: the reference first.
 [[nodiscard]] const std::vector<std::string>& default_laws();
 
-/// The law every other law is compared with along the trajectory.
-inline constexpr std::string_view kReferenceLaw = "exact";
+/// The law every other law is compared with along the trajectory: the registry's reference law.
+inline const std::string kReferenceLaw = friction::reference_law_name();
 /// Output interval of the paper's runs, s (the scenario files say 1e-3 s). 100 Hz resolves the
 /// nutation of gamma3 (<= ~20 Hz in these runs) and keeps a 450 s run's CSV near 20 MB; the Hertz
 /// bounce (~49 Hz) is aliased in the CSV, so lift-offs and min N come from the integrator's steps.
