@@ -51,10 +51,14 @@ double parse_number(std::string_view field, std::string_view column) {
   double value = 0.0;
   const auto* first = text.data();
   const auto* last = text.data() + text.size();
-  if (!text.empty() && *first == '+') ++first;  // from_chars does not take a leading '+'
+  // from_chars does not take a leading '+' (nor, after it, a sign).
+  const bool plus = !text.empty() && *first == '+';
+  if (plus) ++first;
   const auto [ptr, ec] = std::from_chars(first, last, value);
+  const bool signed_twice = plus && first != last && *first == '-';
+  if (!text.empty() && ec == std::errc() && ptr == last && !signed_twice) return value;  // the common case
   const std::string quoted = "column " + std::string(column) + " = '" + std::string(text) + "'";
-  if (!text.empty() && ptr == last && ec == std::errc::result_out_of_range) {
+  if (!text.empty() && ptr == last && ec == std::errc::result_out_of_range && !signed_twice) {
     // from_chars reports overflow and underflow to zero alike; strtod tells them apart.
     const std::string copy(text);
     const double approx = std::strtod(copy.c_str(), nullptr);
@@ -64,8 +68,7 @@ double parse_number(std::string_view field, std::string_view column) {
                                              number_text(std::numeric_limits<double>::denorm_min())) +
                    ")"};
   }
-  if (text.empty() || ec != std::errc() || ptr != last) throw RowError{quoted + " is not a number"};
-  return value;
+  throw RowError{quoted + " is not a number"};
 }
 
 void split_into(std::string_view line, std::vector<std::string_view>& fields) {

@@ -78,6 +78,7 @@ TEST(EvaluateCsv, ErrorsNameTheLineAndWriteNothing) {
       {"U,U,Omega,a,b,psi,N,k\n", "input line 1: column U appears twice"},
       {"U,Omega,a,b,psi,N,k\n1,1,1,1,0,1,0.1\n1,1,1,1,0,1\n", "input line 3: has 6 fields, the header has 7"},
       {"U,Omega,a,b,psi,N,k\n1,1,1,1,0,1,0.1\n1,fast,1,1,0,1,0.1\n", "input line 3: column Omega = 'fast' is not a number"},
+      {"U,Omega,a,b,psi,N,k\n+-1,1,1,1,0,1,0.1\n", "input line 2: column U = '+-1' is not a number"},
       {"U,Omega,a,b,psi,N,k\n1,1,1,2,0,1,0.1\n", "input line 2: friction input b = 2 is invalid"},
       {"U,Omega,a,b,psi,N,k\n1,1,1,1,0,-1,0.1\n", "input line 2: friction input N = -1 is invalid"},
   };
