@@ -69,7 +69,9 @@ struct LawPromises {
   bool dissipative = false;         ///< F1 U + M Omega >= 0: friction never adds energy
   bool bounded = false;             ///< F1^2 + F2^2 <= (kN)^2 and |M| <= kN a
   bool exact_pure_spin = false;     ///< U = 0: M = (3/8) k N a E(e) sign(Omega), e^2 = 1 - mu^2
-  bool whole_domain = false;        ///< evaluates every input validate() accepts (never throws)
+  double min_axis_ratio = 0.0;      ///< b/a below this is rejected with std::invalid_argument
+  bool whole_domain = false;        ///< evaluates every input validate() accepts with
+                                    ///< b/a >= min_axis_ratio, never throwing
   double tolerance = 0.0;           ///< per kN and kNa, to which the promises hold
 };
 

@@ -49,6 +49,7 @@ LawPromises PadePrintedLaw::promises() const {
   p.F2_in_Omega = Parity::odd;
   p.M_in_Omega = Parity::odd;
   p.pi_periodic_in_psi = true;
+  p.min_axis_ratio = kPadePrintedMinAxisRatio;  // and not whole_domain: its poles throw
   // Rounding, away from the poles: the coefficients reach ~mu^(-7/4) ~ 3e3 at mu = 0.01, and
   // amplify the rounding of cos, sin of a shifted psi by as much.
   p.tolerance = 1e-11;
@@ -68,9 +69,6 @@ PoleDenominators PadePrintedLaw::pole_denominators(const ContactInput& in) const
 }
 
 FrictionForces PadePrintedLaw::do_evaluate(const ContactInput& in) const {
-  const double F0 = in.k * in.N;
-  if (F0 == 0.0 || (in.U == 0.0 && in.Omega == 0.0)) return {};
-  if (in.Omega == 0.0) return {F0, 0.0, 0.0};  // eq. (8) at Omega = 0: F1 = F0 U^2/U^2, F2 = M = 0
   const double mu = in.b / in.a;
   if (mu < kPadePrintedMinAxisRatio) {
     std::ostringstream msg;
@@ -80,6 +78,9 @@ FrictionForces PadePrintedLaw::do_evaluate(const ContactInput& in) const {
         << ", where the coefficients of eq. (9) (up to mu^(-7/4)) leave the double range";
     throw std::invalid_argument(msg.str());
   }
+  const double F0 = in.k * in.N;
+  if (F0 == 0.0 || (in.U == 0.0 && in.Omega == 0.0)) return {};
+  if (in.Omega == 0.0) return {F0, 0.0, 0.0};  // eq. (8) at Omega = 0: F1 = F0 U^2/U^2, F2 = M = 0
   const double alpha = alpha_ == PadeAlpha::major ? in.a : in.b;
   const auto c = pade_printed_coefficients(mu, in.psi);
   const double sign = in.Omega > 0.0 ? 1.0 : -1.0;

@@ -22,9 +22,9 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-// The accuracy the reference promises (per kN, per kNa): GSL's error estimates must be below it
-// or the call throws. Measured, it is ~5e-12 at worst (docs/exact-law.md).
-constexpr double kReferenceTol = 1e-10;
+// The accuracy the reference promises in its domain (per kN, per kNa; friction/exact_reference_law.h),
+// plus that of `exact` (1e-13), which is negligible beside it.
+constexpr double kReferenceTol = kExactReferenceAccuracy;
 
 ContactInput make(double s, double mu, double psi, double omega = 1.0) {
   return dimensionless_contact(s, mu, psi, omega);
