@@ -17,8 +17,8 @@
 
 namespace frictionlab::accuracy {
 
-/// |reference| above which the sign of a law's F2 (or M) is checked: 1e-9 kN is ten times the
-/// exact law's accuracy target (1e-10), so the reference's sign is certain there.
+/// |reference| above which the sign of a law's F2 (or M) is checked: 1e-9 kN is ten thousand times
+/// the exact law's accuracy (1e-13), so the reference's sign is certain there.
 inline constexpr double kSignThreshold = 1e-9;
 
 /// Power of friction per (kN a|Omega|): F1 s + M sign, for F1 per kN, M per kNa, s = U/(a|Omega|).
