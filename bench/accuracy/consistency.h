@@ -1,7 +1,7 @@
 #pragma once
 // Physical consistency checks of a law on the grid: dissipation and the signs of its outputs.
 //
-// Dissipation (model-notes §1): the power of friction F1 U + M Omega is >= 0 for the exact law
+// Dissipation (docs/model.md §2): the power of friction F1 U + M Omega is >= 0 for the exact law
 // (it is the integral of k p |v| over the patch), so a law with F1 U + M Omega < 0 at some contact
 // feeds energy into the motion there. On the grid (a = 1, |Omega| = 1, kN = 1) the power per
 // kN a|Omega| is F1 s + M sign(Omega).
