@@ -17,8 +17,9 @@
 #include <limits>
 #include <optional>
 #include <ostream>
-#include <sstream>
 #include <stdexcept>
+
+#include "friction/support/number_format.h"
 
 namespace frictionlab::friction {
 namespace {
@@ -33,13 +34,6 @@ std::string_view trim(std::string_view s) {
 }
 
 std::string at_line(std::size_t line) { return "input line " + std::to_string(line) + ": "; }
-
-std::string number_text(double v) {
-  std::ostringstream out;
-  out.precision(17);
-  out << v;
-  return out.str();
-}
 
 // A bad row: its message names the column; the caller adds the line.
 struct RowError {
@@ -63,9 +57,9 @@ double parse_number(std::string_view field, std::string_view column) {
     const std::string copy(text);
     const double approx = std::strtod(copy.c_str(), nullptr);
     throw RowError{quoted + " is out of the range of a double (" +
-                   (std::isinf(approx) ? "magnitude above " + number_text(std::numeric_limits<double>::max())
+                   (std::isinf(approx) ? "magnitude above " + support::shortest(std::numeric_limits<double>::max())
                                        : "nonzero, magnitude below " +
-                                             number_text(std::numeric_limits<double>::denorm_min())) +
+                                             support::shortest(std::numeric_limits<double>::denorm_min())) +
                    ")"};
   }
   throw RowError{quoted + " is not a number"};
