@@ -8,7 +8,6 @@
 #include <cerrno>
 #include <charconv>
 #include <cmath>
-#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
@@ -79,18 +78,12 @@ void split_into(std::string_view line, std::vector<std::string_view>& fields) {
   fields.push_back(line.substr(start));
 }
 
-void append_double(std::string& out, double v) {
-  char buf[32];
-  const int n = std::snprintf(buf, sizeof buf, "%.17g", v);
-  out.append(buf, static_cast<std::size_t>(n));
-}
-
 void append_forces(std::string& out, const FrictionForces& f) {
-  append_double(out, f.F1);
+  support::append_shortest(out, f.F1);
   out += ',';
-  append_double(out, f.F2);
+  support::append_shortest(out, f.F2);
   out += ',';
-  append_double(out, f.M);
+  support::append_shortest(out, f.M);
 }
 
 [[noreturn]] void write_failed(int err) {
