@@ -1,25 +1,25 @@
 #include "dynamics/body.h"
 
 #include <cmath>
-#include <sstream>
 #include <stdexcept>
+#include <string>
+
+#include "friction/support/errors.h"
+#include "friction/support/number_format.h"
 
 namespace frictionlab::dynamics {
 namespace {
+
+using support::invalid_value;
+using support::message_number;
 
 // C <= 2A holds for every body of revolution (2A - C = 2 ∫ xi3^2 dm >= 0); equality is a flat
 // disc. The slack only absorbs rounding in user-supplied values.
 constexpr double kInertiaTriangleSlack = 1e-12;
 
-[[noreturn]] void fail(const std::string& key, double value, const std::string& rule) {
-  std::ostringstream msg;
-  msg.precision(12);
-  msg << key << " = " << value << " is invalid: " << rule;
-  throw std::invalid_argument(msg.str());
-}
-
 void require_positive(const std::string& key, double value, const char* unit) {
-  if (!(std::isfinite(value) && value > 0.0)) fail(key, value, std::string("it must be finite and > 0 ") + unit);
+  if (!(std::isfinite(value) && value > 0.0))
+    throw invalid_value(key, value, std::string("it must be finite and > 0 ") + unit);
 }
 
 Profile profile_of(const BodySpec& s) {
@@ -73,23 +73,16 @@ Body make_body(const BodySpec& spec) {
 
   double com = spec.preset == "egg-printed" ? 0.0 : homo.centroid;
   if (spec.com) com = *spec.com;
-  if (!std::isfinite(com) || !(com > profile.z_lo() && com < profile.z_hi())) {
-    std::ostringstream rule;
-    rule.precision(12);
-    rule << "the centre of mass must lie on the axis inside the body, between the poles z = " << profile.z_lo()
-         << " and " << profile.z_hi() << " m";
-    fail("body.com", com, rule.str());
-  }
+  if (!std::isfinite(com) || !(com > profile.z_lo() && com < profile.z_hi()))
+    throw invalid_value("body.com", com,
+                        "the centre of mass must lie on the axis inside the body, between the poles z = " +
+                            message_number(profile.z_lo()) + " and " + message_number(profile.z_hi()) + " m");
   const double A = spec.A ? *spec.A : homo.transverse_about(com);
   const double C = spec.C ? *spec.C : homo.C;
   require_positive("body.A", A, "kg m^2");
   require_positive("body.C", C, "kg m^2");
-  if (C > 2.0 * A * (1.0 + kInertiaTriangleSlack)) {
-    std::ostringstream rule;
-    rule.precision(12);
-    rule << "a body of revolution has C <= 2A (here A = " << A << " kg m^2)";
-    fail("body.C", C, rule.str());
-  }
+  if (C > 2.0 * A * (1.0 + kInertiaTriangleSlack))
+    throw invalid_value("body.C", C, "a body of revolution has C <= 2A (here A = " + message_number(A) + " kg m^2)");
   return Body{std::move(profile), spec.mass, com, A, C, homo};
 }
 

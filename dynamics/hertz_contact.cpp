@@ -1,25 +1,18 @@
 #include "dynamics/hertz_contact.h"
 
-#include <sstream>
-#include <stdexcept>
+#include <cmath>
+
+#include "friction/support/errors.h"
 
 namespace frictionlab::dynamics {
-namespace {
-
-[[noreturn]] void fail(const char* key, double value, const char* rule) {
-  std::ostringstream msg;
-  msg.precision(12);
-  msg << key << " = " << value << " is invalid: " << rule;
-  throw std::invalid_argument(msg.str());
-}
-
-}  // namespace
 
 void PlaneContact::validate() const {
-  if (!(std::isfinite(k) && k >= 0.0)) fail("contact.k", k, "the friction coefficient must be finite and >= 0");
+  if (!(std::isfinite(k) && k >= 0.0))
+    throw support::invalid_value("contact.k", k, "the friction coefficient must be finite and >= 0");
   if (!(std::isfinite(lambda) && lambda > 0.0))
-    fail("contact.lambda", lambda, "the Hertz stiffness must be finite and > 0 N/m^1.5");
-  if (!(std::isfinite(g) && g >= 0.0)) fail("contact.g", g, "gravity must be finite and >= 0 m/s^2");
+    throw support::invalid_value("contact.lambda", lambda, "the Hertz stiffness must be finite and > 0 N/m^1.5");
+  if (!(std::isfinite(g) && g >= 0.0))
+    throw support::invalid_value("contact.g", g, "gravity must be finite and >= 0 m/s^2");
 }
 
 }  // namespace frictionlab::dynamics

@@ -5,17 +5,14 @@
 #include <cmath>
 #include <memory>
 #include <numbers>
-#include <sstream>
-#include <stdexcept>
+
+#include "friction/support/errors.h"
 
 namespace frictionlab::dynamics {
 
 MassProperties homogeneous_mass_properties(const Profile& profile, double mass) {
-  if (!(std::isfinite(mass) && mass > 0.0)) {
-    std::ostringstream msg;
-    msg << "body mass = " << mass << " kg is invalid: it must be finite and > 0";
-    throw std::invalid_argument(msg.str());
-  }
+  if (!(std::isfinite(mass) && mass > 0.0))
+    throw support::invalid_value("body mass", mass, "it must be finite and > 0 kg");
   const Polynomial& P = profile.chi2();
   const double lo = profile.z_lo();
   const double hi = profile.z_hi();

@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
-#include <sstream>
-#include <stdexcept>
+#include <string>
+
+#include "friction/support/errors.h"
+#include "friction/support/number_format.h"
 
 namespace frictionlab::dynamics {
 namespace {
@@ -21,24 +23,11 @@ constexpr double kConvexityRootImagTolerance = 1e-6;
 // splits a double root by ~sqrt(machine epsilon) ~ 1e-8.
 constexpr double kRootClusterTolerance = 1e-6;
 
-std::string list(const std::vector<double>& c) {
-  std::ostringstream s;
-  s.precision(17);
-  s << '[';
-  for (std::size_t i = 0; i < c.size(); ++i) s << (i ? ", " : "") << c[i];
-  s << ']';
-  return s.str();
-}
+using support::message_number;
 
+// The coefficients as given and the rule they break, keyed by `what` (body.chi2, ...).
 [[noreturn]] void fail(const std::string& what, const std::vector<double>& c, const std::string& rule) {
-  throw std::invalid_argument(what + " = " + list(c) + " is not a valid body profile: " + rule);
-}
-
-std::string num(double x) {
-  std::ostringstream s;
-  s.precision(10);
-  s << x;
-  return s.str();
+  throw support::InvalidValue(what, what + " = " + support::message_list(c) + " is not a valid body profile: " + rule);
 }
 
 double chebyshev_node(double lo, double hi, int i, int n) {
@@ -83,15 +72,15 @@ Profile::Profile(std::vector<double> chi2_ascending, std::string what) {
     std::string s;
     for (const auto& [lo, hi] : spans) {
       if (!s.empty()) s += ", ";
-      s.append("(").append(num(lo)).append(", ").append(num(hi)).append(")");
+      s.append("(").append(message_number(lo)).append(", ").append(message_number(hi)).append(")");
     }
     fail(what, given, "chi^2 is positive on several bounded intervals " + s + "; the body must be one");
   }
   z_lo_ = spans.front().first;
   z_hi_ = spans.front().second;
   if (span_multiplicity.front() > 1)
-    fail(what, given, "a pole (" + num(z_lo_) + " or " + num(z_hi_) + " m) is a multiple root of chi^2 (a cone or "
-                      "cusp); the poles must be simple roots");
+    fail(what, given, "a pole (" + message_number(z_lo_) + " or " + message_number(z_hi_) +
+                          " m) is a multiple root of chi^2 (a cone or cusp); the poles must be simple roots");
   const double L = z_hi_ - z_lo_;
 
   double pmax = 0.0;
@@ -99,8 +88,8 @@ Profile::Profile(std::vector<double> chi2_ascending, std::string what) {
     const double z = chebyshev_node(z_lo_, z_hi_, i, kCheckSamples);
     const double pz = p_(z);
     if (!(pz > 0.0))
-      fail(what, given, "chi^2 must be positive between its roots " + num(z_lo_) + " and " + num(z_hi_) +
-                            " m; it is " + num(pz) + " at z = " + num(z));
+      fail(what, given, "chi^2 must be positive between its roots " + message_number(z_lo_) + " and " +
+                            message_number(z_hi_) + " m; it is " + message_number(pz) + " at z = " + message_number(z));
     pmax = std::max(pmax, pz);
   }
   max_radius_ = std::sqrt(pmax);
@@ -108,7 +97,7 @@ Profile::Profile(std::vector<double> chi2_ascending, std::string what) {
   const Polynomial dp = p_.derivative();
   for (double z : {z_lo_, z_hi_}) {
     if (std::abs(dp(z)) * L / pmax < kSimpleRootTolerance)
-      fail(what, given, "the pole at z = " + num(z) + " m is a multiple root of chi^2 (a cone or cusp); "
+      fail(what, given, "the pole at z = " + message_number(z) + " m is a multiple root of chi^2 (a cone or cusp); "
                         "the poles must be simple roots");
   }
 
@@ -117,13 +106,13 @@ Profile::Profile(std::vector<double> chi2_ascending, std::string what) {
   for (int i = 0; i <= kCheckSamples; ++i) {
     const double z = chebyshev_node(z_lo_, z_hi_, i, kCheckSamples);
     if (!(G(z) < 0.0))
-      fail(what, given, "the body is not strictly convex: 2 P P'' - P'^2 = " + num(G(z)) + " >= 0 at z = " +
-                            num(z) + " m (a convex body of revolution needs chi'' < 0)");
+      fail(what, given, "the body is not strictly convex: 2 P P'' - P'^2 = " + message_number(G(z)) +
+                            " >= 0 at z = " + message_number(z) + " m (a convex body of revolution needs chi'' < 0)");
   }
   if (G.degree() >= 1) {
     for (double z : real_roots(G, kConvexityRootImagTolerance)) {
       if (z > z_lo_ && z < z_hi_)
-        fail(what, given, "the body is not strictly convex: chi'' vanishes at z = " + num(z) +
+        fail(what, given, "the body is not strictly convex: chi'' vanishes at z = " + message_number(z) +
                               " m (a convex body of revolution needs chi'' < 0)");
     }
   }
@@ -131,17 +120,15 @@ Profile::Profile(std::vector<double> chi2_ascending, std::string what) {
 
 Profile Profile::sphere(double radius) {
   if (!(std::isfinite(radius) && radius > 0.0))
-    throw std::invalid_argument("sphere radius = " + num(radius) + " m is invalid: it must be finite and > 0");
+    throw support::invalid_value("sphere radius", radius, "it must be finite and > 0 m");
   return Profile({radius * radius, 0.0, -1.0}, "sphere profile");
 }
 
 Profile Profile::spheroid(double equatorial, double polar) {
   if (!(std::isfinite(equatorial) && equatorial > 0.0))
-    throw std::invalid_argument("spheroid equatorial semi-axis = " + num(equatorial) +
-                                " m is invalid: it must be finite and > 0");
+    throw support::invalid_value("spheroid equatorial semi-axis", equatorial, "it must be finite and > 0 m");
   if (!(std::isfinite(polar) && polar > 0.0))
-    throw std::invalid_argument("spheroid polar semi-axis = " + num(polar) +
-                                " m is invalid: it must be finite and > 0");
+    throw support::invalid_value("spheroid polar semi-axis", polar, "it must be finite and > 0 m");
   const double e2 = equatorial * equatorial;
   return Profile({e2, 0.0, -e2 / (polar * polar)}, "spheroid profile");
 }

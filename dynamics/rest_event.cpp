@@ -1,25 +1,23 @@
 #include "dynamics/rest_event.h"
 
-#include <sstream>
-#include <stdexcept>
+#include <cmath>
+#include <string>
+
+#include "friction/support/errors.h"
+#include "friction/support/number_format.h"
 
 namespace frictionlab::dynamics {
 namespace {
 
+using support::significant;
+
 void require_nonnegative(const char* key, const std::optional<double>& value, const char* unit) {
-  if (value && !(std::isfinite(*value) && *value >= 0.0)) {
-    std::ostringstream msg;
-    msg.precision(12);
-    msg << key << " = " << *value << " is invalid: it must be finite and >= 0 " << unit << " (0 disables rest)";
-    throw std::invalid_argument(msg.str());
-  }
+  if (value && !(std::isfinite(*value) && *value >= 0.0))
+    throw support::invalid_value(key, *value, "it must be finite and >= 0 " + std::string(unit) + " (0 disables rest)");
 }
 
 std::string size_note(const BodyScales& s) {
-  std::ostringstream n;
-  n.precision(6);
-  n << "R = " << s.size << " m (body size), g = " << s.gravity << " m/s^2";
-  return n.str();
+  return "R = " + significant(s.size, 6) + " m (body size), g = " + significant(s.gravity, 6) + " m/s^2";
 }
 
 }  // namespace
@@ -32,14 +30,12 @@ void RestThresholds::validate() const {
 
 RestRule resolve_rest(const RestThresholds& given, const BodyScales& s) {
   const std::string note = size_note(s);
-  std::ostringstream mass;
-  mass.precision(6);
-  mass << "m = " << s.mass << " kg, " << note;
+  const std::string mass = "m = " + significant(s.mass, 6) + " kg, " + note;
   return {resolve_threshold("run.rest_slip_speed", "m/s", given.slip_speed, kRestSlipSpeedFactor, s.speed,
                             "sqrt(g R)", note),
           resolve_threshold("run.rest_spin", "1/s", given.spin, kRestSpinFactor, s.rate, "sqrt(g/R)", note),
           resolve_threshold("run.rest_kinetic_energy", "J", given.kinetic_energy, kRestKineticEnergyFactor, s.energy,
-                            "m g R", mass.str())};
+                            "m g R", mass)};
 }
 
 }  // namespace frictionlab::dynamics

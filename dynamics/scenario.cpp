@@ -13,6 +13,7 @@
 #include "dynamics/scenario_limits.h"
 #include "friction/registry.h"
 #include "friction/support/errors.h"
+#include "friction/support/number_format.h"
 
 namespace frictionlab::dynamics {
 namespace {
@@ -251,11 +252,9 @@ Scenario build(const toml::table& root, const std::string& source, const std::ve
   const Eigen::Vector3d gamma = init.vector3("gamma");
   const double len = gamma.norm();
   if (!(std::isfinite(len) && std::abs(len - 1.0) <= kGammaUnitTolerance)) {
-    std::ostringstream m;
-    m.precision(10);
-    m << "initial.gamma = [" << gamma[0] << ", " << gamma[1] << ", " << gamma[2] << "] has length " << len
-      << ": it must be a unit vector (within " << kGammaUnitTolerance << "; it is then normalised)";
-    fail_at("initial.gamma", m.str());
+    fail_at("initial.gamma", "initial.gamma = " + support::message_list({gamma.data(), 3}) + " has length " +
+                                 support::message_number(len) + ": it must be a unit vector (within " +
+                                 support::message_number(kGammaUnitTolerance) + "; it is then normalised)");
   }
   s.initial.gamma = gamma / len;
   s.initial.omega = init.vector3("omega", Eigen::Vector3d::Zero());

@@ -8,28 +8,22 @@
 #include <cmath>
 #include <limits>
 #include <memory>
-#include <sstream>
 #include <stdexcept>
+#include <string>
 
 #include "dynamics/gsl_steppers.h"
 #include "dynamics/pole_watch.h"
 #include "dynamics/step_sampler.h"
 #include "dynamics/tolerance_scales.h"
 #include "friction/gsl_error_policy.h"
+#include "friction/support/errors.h"
+#include "friction/support/number_format.h"
 
 namespace frictionlab::dynamics {
 namespace {
 
-std::string num(double x) {
-  std::ostringstream s;
-  s.precision(10);
-  s << x;
-  return s.str();
-}
-
-[[noreturn]] void fail(const char* key, double value, const std::string& rule) {
-  throw std::invalid_argument(std::string(key) + " = " + num(value) + " is invalid: " + rule);
-}
+using support::invalid_value;
+using support::message_number;
 
 // Why the last evaluation of the right-hand side failed.
 enum class RhsFailure { none, pole, nonfinite, law_error };
@@ -46,29 +40,22 @@ struct Context {
 
 // The friction at a state, in one line (for failure messages only).
 std::string describe_friction(const BodyOnPlane& sys, const StateVector& x) {
-  std::ostringstream m;
-  m.precision(10);
   try {
     const ContactState c = sys.contact_state(x);
-    m << "friction law '" << sys.law().name() << "' gives F1 = " << c.friction.F1 << " N, F2 = " << c.friction.F2
-      << " N, M = " << c.friction.M << " N m at U = " << c.U << " m/s, Omega = " << c.Omega << " 1/s, a = " << c.a
-      << " m, b = " << c.b << " m, psi = " << c.psi << ", N = " << c.N << " N";
+    return "friction law '" + std::string(sys.law().name()) + "' gives F1 = " + message_number(c.friction.F1) +
+           " N, F2 = " + message_number(c.friction.F2) + " N, M = " + message_number(c.friction.M) +
+           " N m at U = " + message_number(c.U) + " m/s, Omega = " + message_number(c.Omega) +
+           " 1/s, a = " + message_number(c.a) + " m, b = " + message_number(c.b) +
+           " m, psi = " + message_number(c.psi) + ", N = " + message_number(c.N) + " N";
   } catch (const std::exception& e) {
-    m << e.what();
+    return e.what();
   }
-  return m.str();
 }
 
 std::string describe_nonfinite(const BodyOnPlane& sys, double t, const StateVector& x) {
-  std::ostringstream m;
-  m.precision(10);
-  m << "the right-hand side is not finite at t = " << t << " s";
-  if (!x.allFinite()) {
-    m << " (the trial state is not finite)";
-    return m.str();
-  }
-  m << ": " << describe_friction(sys, x);
-  return m.str();
+  const std::string m = "the right-hand side is not finite at t = " + message_number(t) + " s";
+  if (!x.allFinite()) return m + " (the trial state is not finite)";
+  return m + ": " + describe_friction(sys, x);
 }
 
 // The right-hand side as GSL calls it, for accepted steps and their trial stages alike. A state on
@@ -97,7 +84,7 @@ int rhs(double t, const double y[], double f[], void* params) {
     ctx.sys->derivatives(x, c, d);
   } catch (const std::exception& e) {
     ctx.last = RhsFailure::law_error;
-    ctx.message = std::string("at t = ") + num(t) + " s: " + e.what();
+    ctx.message = std::string("at t = ") + message_number(t) + " s: " + e.what();
     return GSL_EBADFUNC;
   }
   if (!d.allFinite()) {
@@ -127,31 +114,36 @@ void IntegratorOptions::validate() const {
     for (const auto& m : integrator_methods()) list += (list.empty() ? "" : ", ") + m;
     throw std::invalid_argument("run.integrator = '" + method + "' is not a known stepper; known: " + list);
   }
-  if (!(std::isfinite(abs_tol) && abs_tol > 0.0)) fail("run.abs_tol", abs_tol, "it must be finite and > 0");
-  if (!(std::isfinite(rel_tol) && rel_tol >= 0.0)) fail("run.rel_tol", rel_tol, "it must be finite and >= 0");
+  if (!(std::isfinite(abs_tol) && abs_tol > 0.0))
+    throw invalid_value("run.abs_tol", abs_tol, "it must be finite and > 0");
+  if (!(std::isfinite(rel_tol) && rel_tol >= 0.0))
+    throw invalid_value("run.rel_tol", rel_tol, "it must be finite and >= 0");
   if (!(std::isfinite(initial_step) && initial_step > 0.0))
-    fail("run.initial_step", initial_step, "it must be finite and > 0 s");
+    throw invalid_value("run.initial_step", initial_step, "it must be finite and > 0 s");
   if (!(std::isfinite(max_step) && max_step >= 0.0))
-    fail("run.max_step", max_step, "it must be finite and >= 0 s (0: no limit)");
-  if (max_steps <= 0) fail("run.max_steps", static_cast<double>(max_steps), "it must be > 0");
+    throw invalid_value("run.max_step", max_step, "it must be finite and >= 0 s (0: no limit)");
+  if (max_steps <= 0) throw invalid_value("run.max_steps", static_cast<long long>(max_steps), "it must be > 0");
 }
 
 void RunOptions::validate() const {
-  if (!(std::isfinite(t_end) && t_end > 0.0)) fail("run.t_end", t_end, "it must be finite and > 0 s");
+  if (!(std::isfinite(t_end) && t_end > 0.0)) throw invalid_value("run.t_end", t_end, "it must be finite and > 0 s");
   if (!(std::isfinite(output_dt) && output_dt > 0.0))
-    fail("run.output_dt", output_dt, "it must be finite and > 0 s");
-  if (max_samples <= 0) fail("run.max_samples", static_cast<double>(max_samples), "it must be > 0");
+    throw invalid_value("run.output_dt", output_dt, "it must be finite and > 0 s");
+  if (max_samples <= 0) throw invalid_value("run.max_samples", static_cast<long long>(max_samples), "it must be > 0");
   if (t_end / output_dt > static_cast<double>(max_samples))
-    fail("run.output_dt", output_dt,
-         "run.t_end/run.output_dt = " + num(t_end / output_dt) + " samples exceeds run.max_samples = " +
-             std::to_string(max_samples) + " (raise run.output_dt, or run.max_samples if you mean it)");
+    throw invalid_value("run.output_dt", output_dt,
+                        "run.t_end/run.output_dt = " + message_number(t_end / output_dt) +
+                            " samples exceeds run.max_samples = " + std::to_string(max_samples) +
+                            " (raise run.output_dt, or run.max_samples if you mean it)");
   integrator.validate();
   if (integrator.max_step > 0.0 && integrator.max_step * static_cast<double>(integrator.max_steps) < t_end)
-    fail("run.max_step", integrator.max_step,
-         "run.max_steps = " + std::to_string(integrator.max_steps) + " steps of at most run.max_step reach only t = " +
-             num(integrator.max_step * static_cast<double>(integrator.max_steps)) + " s < run.t_end = " + num(t_end) +
-             " s");
-  if (max_stagnant_steps < 0) fail("run.max_stagnant_steps", static_cast<double>(max_stagnant_steps), "it must be >= 0 (0: never)");
+    throw invalid_value("run.max_step", integrator.max_step,
+                        "run.max_steps = " + std::to_string(integrator.max_steps) +
+                            " steps of at most run.max_step reach only t = " +
+                            message_number(integrator.max_step * static_cast<double>(integrator.max_steps)) +
+                            " s < run.t_end = " + message_number(t_end) + " s");
+  if (max_stagnant_steps < 0)
+    throw invalid_value("run.max_stagnant_steps", static_cast<long long>(max_stagnant_steps), "it must be >= 0 (0: never)");
   rest.validate();
   settle.validate();
 }
@@ -218,10 +210,11 @@ RunSummary simulate(const BodyOnPlane& sys, const StateVector& x0, const RunOpti
       const ContactState c = sys.contact_state(state);
       observer->sample(Sample{time, state, c, sys.energy(state, c), sys.kinetic_energy(state)});
     } catch (const OutputFailure& e) {
-      stop(Termination::output_error, std::string("the output failed at t = ") + num(time) + " s: " + e.what());
+      stop(Termination::output_error, "the output failed at t = " + message_number(time) + " s: " + e.what());
       return false;
     } catch (const OutputLimitReached& e) {
-      stop(Termination::output_limit, std::string("the output reached its limit at t = ") + num(time) + " s: " + e.what());
+      stop(Termination::output_limit,
+           "the output reached its limit at t = " + message_number(time) + " s: " + e.what());
       return false;
     }
     ++s.samples;
@@ -272,7 +265,8 @@ RunSummary simulate(const BodyOnPlane& sys, const StateVector& x0, const RunOpti
       if (!x.allFinite()) {
         x = step.x0;
         t = step.t0;
-        stop(Termination::non_finite, "the state became non-finite after the step from t = " + num(t) + " s");
+        stop(Termination::non_finite,
+             "the state became non-finite after the step from t = " + message_number(t) + " s");
         break;
       }
       step.t1 = t;
@@ -307,17 +301,20 @@ RunSummary simulate(const BodyOnPlane& sys, const StateVector& x0, const RunOpti
         s.thresholds = {s.settle.time, s.settle.normal_speed, s.rest.slip_speed, s.rest.spin, s.rest.kinetic_energy};
       };
       if (settled && s.rest.at_rest(c.in_contact, c.U, c.Omega, kinetic)) {
-        stop(Termination::rest, "settled since t = " + num(settling.since()) + " s; U = " + num(c.U) +
-                                    " m/s, |Omega| = " + num(std::abs(c.Omega)) + " 1/s and kinetic energy " +
-                                    num(kinetic) + " J are below the rest thresholds");
+        stop(Termination::rest, "settled since t = " + message_number(settling.since()) +
+                                    " s; U = " + message_number(c.U) + " m/s, |Omega| = " +
+                                    message_number(std::abs(c.Omega)) + " 1/s and kinetic energy " +
+                                    message_number(kinetic) + " J are below the rest thresholds");
         stagnation_rule("< run.rest_kinetic_energy");
         break;
       }
       if (settled && options.stop_when_rolling && s.rest.contact_stagnant(c.in_contact, c.U, c.Omega)) {
-        stop(Termination::rolling, "the contact, settled since t = " + num(settling.since()) +
-                                       " s, neither slips (U = " + num(c.U) + " m/s) nor spins (Omega = " +
-                                       num(c.Omega) + " 1/s) but the kinetic energy " + num(kinetic) +
-                                       " J is above run.rest_kinetic_energy = " + num(s.rest.kinetic_energy.value) +
+        stop(Termination::rolling, "the contact, settled since t = " + message_number(settling.since()) +
+                                       " s, neither slips (U = " + message_number(c.U) +
+                                       " m/s) nor spins (Omega = " + message_number(c.Omega) +
+                                       " 1/s) but the kinetic energy " + message_number(kinetic) +
+                                       " J is above run.rest_kinetic_energy = " +
+                                       message_number(s.rest.kinetic_energy.value) +
                                        " J: the body rolls without slip");
         stagnation_rule(">= run.rest_kinetic_energy");
         break;
@@ -326,10 +323,11 @@ RunSummary simulate(const BodyOnPlane& sys, const StateVector& x0, const RunOpti
           !settled && s.rest.contact_stagnant(c.in_contact, c.U, c.Omega) ? stagnant_unsettled + 1 : 0;
       if (options.max_stagnant_steps > 0 && stagnant_unsettled >= options.max_stagnant_steps) {
         stop(Termination::stagnation,
-             "the contact has stayed in the stagnation region (U = " + num(c.U) + " m/s, |Omega| = " +
-                 num(std::abs(c.Omega)) + " 1/s) for " + std::to_string(stagnant_unsettled) +
-                 " steps while its normal motion has not settled (unsettled at t = " + num(settling.since()) +
-                 " s; now |eps'| = " + num(std::abs(c.u.dot(c.gamma))) +
+             "the contact has stayed in the stagnation region (U = " + message_number(c.U) + " m/s, |Omega| = " +
+                 message_number(std::abs(c.Omega)) + " 1/s) for " + std::to_string(stagnant_unsettled) +
+                 " steps while its normal motion has not settled (unsettled at t = " +
+                 message_number(settling.since()) +
+                 " s; now |eps'| = " + message_number(std::abs(c.u.dot(c.gamma))) +
                  " m/s): a bounce reached the laws' singular set U = Omega = 0, where the integrator only "
                  "chatters and the model has no sticking branch");
         s.rule = "in contact, not settled, U < run.rest_slip_speed and |Omega| < run.rest_spin for "
@@ -357,19 +355,18 @@ RunSummary simulate(const BodyOnPlane& sys, const StateVector& x0, const RunOpti
     if (status == GSL_EBADFUNC) {
       stop(Termination::law_error, ctx.message);
     } else if (ctx.last == RhsFailure::pole) {
-      std::ostringstream m;
-      m.precision(10);
-      m << "the denominator of " << PoleWatch::output_name(ctx.pole_output) << " of friction law '" << sys.law().name()
-        << "' passes through 0 within " << std::abs(h) << " s after t = " << t
-        << " s: the motion cannot be continued past this pole; at the last good state " << describe_friction(sys, x);
-      stop(Termination::law_pole, m.str());
+      stop(Termination::law_pole, "the denominator of " + std::string(PoleWatch::output_name(ctx.pole_output)) +
+                                      " of friction law '" + std::string(sys.law().name()) + "' passes through 0 within " +
+                                      message_number(std::abs(h)) + " s after t = " + message_number(t) +
+                                      " s: the motion cannot be continued past this pole; at the last good state " +
+                                      describe_friction(sys, x));
       s.rule = "a denominator of the friction law's outputs passes through 0 (friction/law.h pole_denominators)";
     } else if (ctx.last == RhsFailure::nonfinite) {
       stop(Termination::non_finite, ctx.message + " (no step size down to machine precision avoids it)");
     } else {
       stop(Termination::integrator_failure,
            std::string("GSL: ") + gsl_strerror(status) + " (no step above machine precision meets the tolerance) at t = " +
-               num(t) + " s; at that state " + describe_friction(sys, x));
+               message_number(t) + " s; at that state " + describe_friction(sys, x));
     }
     break;
   }

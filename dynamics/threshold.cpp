@@ -1,6 +1,6 @@
 #include "dynamics/threshold.h"
 
-#include <sstream>
+#include "friction/support/number_format.h"
 
 namespace frictionlab::dynamics {
 
@@ -13,10 +13,7 @@ Threshold resolve_threshold(std::string key, std::string unit, const std::option
     return t;
   }
   t.value = factor * scale;
-  std::ostringstream s;
-  s.precision(6);
-  s << "default: " << factor << " " << scale_name << ", " << scale_note;
-  t.source = s.str();
+  t.source = "default: " + support::significant(factor, 6) + " " + scale_name + ", " + scale_note;
   return t;
 }
 

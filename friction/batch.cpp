@@ -8,7 +8,6 @@
 #include <cerrno>
 #include <charconv>
 #include <cmath>
-#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
@@ -17,8 +16,9 @@
 #include <limits>
 #include <optional>
 #include <ostream>
-#include <sstream>
 #include <stdexcept>
+
+#include "friction/support/number_format.h"
 
 namespace frictionlab::friction {
 namespace {
@@ -33,13 +33,6 @@ std::string_view trim(std::string_view s) {
 }
 
 std::string at_line(std::size_t line) { return "input line " + std::to_string(line) + ": "; }
-
-std::string number_text(double v) {
-  std::ostringstream out;
-  out.precision(17);
-  out << v;
-  return out.str();
-}
 
 // A bad row: its message names the column; the caller adds the line.
 struct RowError {
@@ -63,9 +56,9 @@ double parse_number(std::string_view field, std::string_view column) {
     const std::string copy(text);
     const double approx = std::strtod(copy.c_str(), nullptr);
     throw RowError{quoted + " is out of the range of a double (" +
-                   (std::isinf(approx) ? "magnitude above " + number_text(std::numeric_limits<double>::max())
+                   (std::isinf(approx) ? "magnitude above " + support::shortest(std::numeric_limits<double>::max())
                                        : "nonzero, magnitude below " +
-                                             number_text(std::numeric_limits<double>::denorm_min())) +
+                                             support::shortest(std::numeric_limits<double>::denorm_min())) +
                    ")"};
   }
   throw RowError{quoted + " is not a number"};
@@ -85,18 +78,12 @@ void split_into(std::string_view line, std::vector<std::string_view>& fields) {
   fields.push_back(line.substr(start));
 }
 
-void append_double(std::string& out, double v) {
-  char buf[32];
-  const int n = std::snprintf(buf, sizeof buf, "%.17g", v);
-  out.append(buf, static_cast<std::size_t>(n));
-}
-
 void append_forces(std::string& out, const FrictionForces& f) {
-  append_double(out, f.F1);
+  support::append_shortest(out, f.F1);
   out += ',';
-  append_double(out, f.F2);
+  support::append_shortest(out, f.F2);
   out += ',';
-  append_double(out, f.M);
+  support::append_shortest(out, f.M);
 }
 
 [[noreturn]] void write_failed(int err) {

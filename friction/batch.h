@@ -7,8 +7,9 @@
 // (a leading '+' allowed); one outside the double range ("1e999", "1e-400") is named as such.
 //
 // Output: every input column as it was, then (with more than one law) a `law` column, then F1, F2,
-// M printed with 17 significant digits (lossless for doubles). Rows come in input order; with
-// several laws, each input row gives one output row per law, in the order the laws are given.
+// M each in the shortest text that reads back to the same double (lossless, never localised). Rows
+// come in input order; with several laws, each input row gives one output row per law, in the
+// order the laws are given.
 //
 // Streaming: rows are read, evaluated and written one at a time, so memory does not grow with the
 // table. With OnError::stop (the default) nothing reaches `out` unless every row succeeds: rows go
@@ -65,7 +66,7 @@ BatchSummary evaluate_csv(const std::vector<const FrictionLaw*>& laws, std::istr
 /// One law, OnError::stop. Returns the number of rows evaluated.
 std::size_t evaluate_csv(const FrictionLaw& law, std::istream& in, std::ostream& out);
 
-/// "F1,F2,M" of one evaluation, each with 17 significant digits.
+/// "F1,F2,M" of one evaluation, each in the shortest round-trip form (support::shortest).
 [[nodiscard]] std::string format_forces(const FrictionForces& f);
 
 }  // namespace frictionlab::friction

@@ -19,10 +19,11 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
-#include <iomanip>
 #include <numbers>
-#include <sstream>
 #include <stdexcept>
+#include <string>
+
+#include "friction/support/number_format.h"
 
 namespace frictionlab::friction {
 namespace {
@@ -492,11 +493,10 @@ LawPromises ExactLaw::promises() const {
 FrictionForces ExactLaw::do_evaluate(const ContactInput& in) const {
   const double mu = in.b / in.a;
   if (mu < kExactMinAxisRatio) {
-    std::ostringstream msg;
-    msg.precision(17);
-    msg << "friction input b = " << in.b << " is invalid for exact: the axis ratio b/a = " << mu << " is below "
-        << std::setprecision(3) << kExactMinAxisRatio << ", the smallest its quadrature is built for (a patch that slender is a line)";
-    throw std::invalid_argument(msg.str());
+    throw std::invalid_argument("friction input b = " + support::shortest(in.b) +
+                                " is invalid for exact: the axis ratio b/a = " + support::shortest(mu) + " is below " +
+                                support::significant(kExactMinAxisRatio, 3) +
+                                ", the smallest its quadrature is built for (a patch that slender is a line)");
   }
   const double kN = in.k * in.N;
   if (kN == 0.0) return {};

@@ -10,12 +10,12 @@
 #include <cmath>
 #include <memory>
 #include <numbers>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <utility>
 
 #include "friction/gsl_error_policy.h"
+#include "friction/support/number_format.h"
 
 namespace frictionlab::friction {
 namespace {
@@ -182,13 +182,11 @@ LawPromises ExactReferenceLaw::promises() const {
 FrictionForces ExactReferenceLaw::do_evaluate(const ContactInput& in) const {
   const double mu = in.b / in.a;
   if (mu < kExactReferenceMinAxisRatio) {
-    std::ostringstream msg;
-    msg.precision(17);
-    msg << "friction input b = " << in.b << " is invalid for exact-reference: the axis ratio b/a = " << mu
-        << " is below " << kExactReferenceMinAxisRatio
-        << ", the smallest for which its GSL quadrature is accurate to " << kExactReferenceAccuracy
-        << " (use 'exact', accurate down to b/a = 1e-12)";
-    throw std::invalid_argument(msg.str());
+    throw std::invalid_argument("friction input b = " + support::shortest(in.b) +
+                                " is invalid for exact-reference: the axis ratio b/a = " + support::shortest(mu) +
+                                " is below " + support::shortest(kExactReferenceMinAxisRatio) +
+                                ", the smallest for which its GSL quadrature is accurate to " +
+                                support::shortest(kExactReferenceAccuracy) + " (use 'exact', accurate down to b/a = 1e-12)");
   }
   const double kN = in.k * in.N;
   if (kN == 0.0) return {};

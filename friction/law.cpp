@@ -2,29 +2,24 @@
 
 #include <cmath>
 #include <limits>
-#include <sstream>
-#include <stdexcept>
 #include <string>
+
+#include "friction/support/errors.h"
+#include "friction/support/number_format.h"
 
 namespace frictionlab::friction {
 namespace {
 
-[[noreturn]] void fail(const char* name, double value, const char* rule) {
-  std::ostringstream msg;
-  msg.precision(17);
-  msg << "friction input " << name << " = " << value << " is invalid: " << rule;
-  throw std::invalid_argument(msg.str());
+using support::shortest;
+
+// Friction inputs print round-trip (support::shortest): the message shows the very double that
+// failed (b a hair above a, say), which the 10 digits of a message number may not.
+support::InvalidValue invalid_input(const char* name, double value, std::string_view rule) {
+  return {std::string("friction input ") + name, shortest(value), rule};
 }
 
 void require_finite(const char* name, double value) {
-  if (!std::isfinite(value)) fail(name, value, "it must be a finite number");
-}
-
-std::string number(double value) {
-  std::ostringstream out;
-  out.precision(17);
-  out << value;
-  return out.str();
+  if (!std::isfinite(value)) throw invalid_input(name, value, "it must be a finite number");
 }
 
 }  // namespace
@@ -42,37 +37,30 @@ void validate(const ContactInput& in) {
   require_finite("psi", in.psi);
   require_finite("N", in.N);
   require_finite("k", in.k);
-  if (in.U < 0.0) fail("U", in.U, "the slip speed must be >= 0 m/s (e1 points along the slip)");
-  if (in.a <= 0.0) fail("a", in.a, "the major semi-axis must be > 0 m");
-  if (in.b <= 0.0) fail("b", in.b, "the minor semi-axis must be > 0 m");
-  if (in.b > in.a) {
-    std::ostringstream rule;
-    rule.precision(17);
-    rule << "the minor semi-axis must not exceed the major semi-axis a = " << in.a << " m";
-    fail("b", in.b, rule.str().c_str());
-  }
-  if (in.N < 0.0) fail("N", in.N, "the normal force must be >= 0 N");
-  if (in.k < 0.0) fail("k", in.k, "the friction coefficient must be >= 0");
+  if (in.U < 0.0) throw invalid_input("U", in.U, "the slip speed must be >= 0 m/s (e1 points along the slip)");
+  if (in.a <= 0.0) throw invalid_input("a", in.a, "the major semi-axis must be > 0 m");
+  if (in.b <= 0.0) throw invalid_input("b", in.b, "the minor semi-axis must be > 0 m");
+  if (in.b > in.a)
+    throw invalid_input("b", in.b, "the minor semi-axis must not exceed the major semi-axis a = " + shortest(in.a) + " m");
+  if (in.N < 0.0) throw invalid_input("N", in.N, "the normal force must be >= 0 N");
+  if (in.k < 0.0) throw invalid_input("k", in.k, "the friction coefficient must be >= 0");
   // Scales every law multiplies by or divides by: overflow would turn finite input into inf or
   // NaN output, and a zero axis ratio is no ellipse.
   constexpr double kMinNormal = std::numeric_limits<double>::min();
   const double mu = in.b / in.a;
   if (mu < kMinNormal) {
-    fail("b", in.b, ("the axis ratio b/a = " + number(mu) + " (a = " + number(in.a) +
-                     " m) is below the smallest normal double, " + number(kMinNormal) +
-                     ": a thinner patch is a line")
-                        .c_str());
+    throw invalid_input("b", in.b, "the axis ratio b/a = " + shortest(mu) + " (a = " + shortest(in.a) +
+                                       " m) is below the smallest normal double, " + shortest(kMinNormal) +
+                                       ": a thinner patch is a line");
   }
   const double kN = in.k * in.N;
   if (!std::isfinite(kN)) {
-    fail("N", in.N, ("with k = " + number(in.k) + ", k N = " + number(kN) +
-                     " overflows: the largest friction force must be a finite double (N)")
-                        .c_str());
+    throw invalid_input("N", in.N, "with k = " + shortest(in.k) + ", k N = " + shortest(kN) +
+                                       " overflows: the largest friction force must be a finite double (N)");
   }
   if (!std::isfinite(kN * in.a)) {
-    fail("a", in.a, ("with k N = " + number(kN) + " N, k N a = " + number(kN * in.a) +
-                     " overflows: the largest friction moment must be a finite double (N m)")
-                        .c_str());
+    throw invalid_input("a", in.a, "with k N = " + shortest(kN) + " N, k N a = " + shortest(kN * in.a) +
+                                       " overflows: the largest friction moment must be a finite double (N m)");
   }
 }
 

@@ -3,10 +3,14 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
-#include <sstream>
 #include <stdexcept>
+#include <string>
+
+#include "friction/support/number_format.h"
 
 namespace frictionlab::friction {
+
+using support::shortest;
 
 PadePrintedCoefficients pade_printed_coefficients(double mu, double psi) {
   constexpr double pi = std::numbers::pi;
@@ -71,12 +75,10 @@ PoleDenominators PadePrintedLaw::pole_denominators(const ContactInput& in) const
 FrictionForces PadePrintedLaw::do_evaluate(const ContactInput& in) const {
   const double mu = in.b / in.a;
   if (mu < kPadePrintedMinAxisRatio) {
-    std::ostringstream msg;
-    msg.precision(17);
-    msg << "friction input b = " << in.b << " is invalid for " << name() << ": the axis ratio b/a = " << mu
-        << " is below " << kPadePrintedMinAxisRatio
-        << ", where the coefficients of eq. (9) (up to mu^(-7/4)) leave the double range";
-    throw std::invalid_argument(msg.str());
+    throw std::invalid_argument("friction input b = " + shortest(in.b) + " is invalid for " + std::string(name()) +
+                                ": the axis ratio b/a = " + shortest(mu) + " is below " +
+                                shortest(kPadePrintedMinAxisRatio) +
+                                ", where the coefficients of eq. (9) (up to mu^(-7/4)) leave the double range");
   }
   const double F0 = in.k * in.N;
   if (F0 == 0.0 || (in.U == 0.0 && in.Omega == 0.0)) return {};
@@ -108,13 +110,11 @@ FrictionForces PadePrintedLaw::do_evaluate(const ContactInput& in) const {
   // range) is a pole: the printed law has no value there.
   const char* pole = !std::isfinite(out.F1) ? "F1" : !std::isfinite(out.F2) ? "F2" : !std::isfinite(out.M) ? "M" : nullptr;
   if (pole) {
-    std::ostringstream msg;
-    msg.precision(17);
-    msg << name() << " is undefined at U = " << in.U << " m/s, Omega = " << in.Omega << " 1/s, a = " << in.a
-        << " m, b = " << in.b << " m, psi = " << in.psi << ": the denominator of " << pole
-        << " in eq. (8) vanishes there (a pole; " << pole << " = "
-        << (pole[0] == 'M' ? out.M : pole[1] == '1' ? out.F1 : out.F2) << ")";
-    throw std::invalid_argument(msg.str());
+    const double value = pole[0] == 'M' ? out.M : pole[1] == '1' ? out.F1 : out.F2;
+    throw std::invalid_argument(std::string(name()) + " is undefined at U = " + shortest(in.U) + " m/s, Omega = " +
+                                shortest(in.Omega) + " 1/s, a = " + shortest(in.a) + " m, b = " + shortest(in.b) +
+                                " m, psi = " + shortest(in.psi) + ": the denominator of " + pole +
+                                " in eq. (8) vanishes there (a pole; " + pole + " = " + shortest(value) + ")");
   }
   return out;
 }

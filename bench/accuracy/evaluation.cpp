@@ -4,9 +4,11 @@
 #include <atomic>
 #include <exception>
 #include <mutex>
-#include <sstream>
 #include <stdexcept>
+#include <string>
 #include <thread>
+
+#include "friction/support/number_format.h"
 
 namespace frictionlab::accuracy {
 
@@ -37,12 +39,12 @@ LawValues evaluate_on_grid(const friction::FrictionLaw& law, const Grid& grid, s
           out.F2[i] = f.F2;
           out.M[i] = f.M;
         } catch (const std::exception& e) {
-          std::ostringstream msg;
-          msg.precision(10);
-          msg << "law '" << law.name() << "' failed at s = " << p.s << ", mu = " << p.mu
-              << ", psi = " << p.psi << ", sign(Omega) = " << p.sign << ": " << e.what();
+          const std::string msg = "law '" + std::string(law.name()) + "' failed at s = " +
+                                  support::message_number(p.s) + ", mu = " + support::message_number(p.mu) +
+                                  ", psi = " + support::message_number(p.psi) +
+                                  ", sign(Omega) = " + std::to_string(p.sign) + ": " + e.what();
           const std::lock_guard lock(error_mutex);
-          if (!error) error = std::make_exception_ptr(std::runtime_error(msg.str()));
+          if (!error) error = std::make_exception_ptr(std::runtime_error(msg));
           next_slice = grid.mu().size();  // stop the other workers early
           return;
         }

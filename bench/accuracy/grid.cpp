@@ -2,8 +2,12 @@
 
 #include <cmath>
 #include <numbers>
-#include <sstream>
 #include <stdexcept>
+#include <string>
+#include <utility>
+
+#include "friction/support/errors.h"
+#include "friction/support/number_format.h"
 
 namespace frictionlab::accuracy {
 namespace {
@@ -19,28 +23,31 @@ std::size_t nearest(const std::vector<double>& nodes, double value) {
 }  // namespace
 
 bool GridSpec::is_valid(std::string* error) const {
-  std::ostringstream msg;
-  msg.precision(17);
+  const auto count = [](std::size_t n) { return static_cast<long long>(n); };
+  std::string msg;
   if (s_points < 2) {
-    msg << "s points = " << s_points << " is invalid: the slip-ratio grid needs at least 2 points";
+    msg = support::invalid_value("s points", count(s_points), "the slip-ratio grid needs at least 2 points").what();
   } else if (mu_points < 2) {
-    msg << "mu points = " << mu_points
-        << " is invalid: the axis-ratio grid needs at least 2 points (mu_min and 1)";
+    msg = support::invalid_value("mu points", count(mu_points),
+                                 "the axis-ratio grid needs at least 2 points (mu_min and 1)")
+              .what();
   } else if (psi_points < 3 || psi_points % 2 == 0) {
-    msg << "psi points = " << psi_points
-        << " is invalid: the orientation grid needs an odd number >= 3 of points, so that 0, pi/2"
-           " and pi are nodes";
+    msg = support::invalid_value("psi points", count(psi_points),
+                                 "the orientation grid needs an odd number >= 3 of points, so that 0, pi/2 and pi "
+                                 "are nodes")
+              .what();
   } else if (!(std::isfinite(s_min) && s_min > 0.0)) {
-    msg << "s_min = " << s_min << " is invalid: the smallest slip ratio must be finite and > 0";
+    msg = support::invalid_value("s_min", s_min, "the smallest slip ratio must be finite and > 0").what();
   } else if (!(std::isfinite(s_max) && s_max > s_min)) {
-    msg << "s_max = " << s_max << " is invalid: the largest slip ratio must be finite and > s_min = "
-        << s_min;
+    msg = support::invalid_value("s_max", s_max,
+                                 "the largest slip ratio must be finite and > s_min = " + support::message_number(s_min))
+              .what();
   } else if (!(mu_min > 0.0 && mu_min < 1.0)) {
-    msg << "mu_min = " << mu_min << " is invalid: the smallest axis ratio must lie in (0, 1)";
+    msg = support::invalid_value("mu_min", mu_min, "the smallest axis ratio must lie in (0, 1)").what();
   } else {
     return true;
   }
-  if (error) *error = msg.str();
+  if (error) *error = std::move(msg);
   return false;
 }
 

@@ -146,7 +146,8 @@ void write_heat(const StudyResult& study, const LawValues& law, const fs::path& 
   const char* comp[] = {"F1/(kN)", "F2/(kN)", "M/(kNa)"};
   for (std::size_t k = 0; k < mus.size(); ++k) {
     for (int c = 0; c < 3; ++c) {
-      gp << "set title '|Δ" << comp[c] << "|,  μ = " << g(study.grid.mu()[mus[k]]) << "'\n"
+      gp << "set title " << support::gnuplot_quoted("|Δ" + std::string(comp[c]) + "|,  μ = " + g(study.grid.mu()[mus[k]]))
+         << "\n"
          << "plot " << support::gnuplot_quoted(name + ".dat") << " index " << k << " using 1:2:" << 3 + c
          << " with image notitle\n";
     }
@@ -188,10 +189,14 @@ void write_singular(const StudyResult& study, const LawValues& law, const LawSum
   std::ostringstream gp;
   const std::size_t rows = (mus.size() + 2) / 3;
   script_head(gp, terminal, name, 1500, 430 * static_cast<int>(rows) + 60);
-  gp << "set multiplot layout " << rows << ",3 title \"" << law.law << ": where it is singular"
-     << (sum.has_denominators ? " (sign of each denominator of eq. (8): a colour change along s is a real pole)" : "")
-     << "\\nblack: an output non-finite or > " << kSingularMagnitude
-     << " in size (F1, F2 per kN, M per kNa) at either sign of Ω\" font ',13'\n"
+  // Two title lines: gnuplot_quoted strings joined by gnuplot's string operator '.' around "\n".
+  const std::string line1 =
+      law.law + ": where it is singular" +
+      (sum.has_denominators ? " (sign of each denominator of eq. (8): a colour change along s is a real pole)" : "");
+  const std::string line2 = "black: an output non-finite or > " + support::significant(kSingularMagnitude, 6) +
+                            " in size (F1, F2 per kN, M per kNa) at either sign of Ω";
+  gp << "set multiplot layout " << rows << ",3 title " << support::gnuplot_quoted(line1) << ".\"\\n\"."
+     << support::gnuplot_quoted(line2) << " font ',13'\n"
      << "set xlabel 'log_{10} s,  s = U/(a|Ω|)'\nset ylabel 'ψ (deg)'\n"
      << "set xrange [" << g(std::log10(grid.s().front())) << ":" << g(std::log10(grid.s().back()))
      << "]\nset yrange [0:180]\nset ytics 0,45,180\nset tics out\n"
@@ -202,7 +207,7 @@ void write_singular(const StudyResult& study, const LawValues& law, const LawSum
         "'|out|>" << kSingularMagnitude << "' 5) font ',9'\n"
      << "set rmargin 9\n";
   for (std::size_t k = 0; k < mus.size(); ++k) {
-    gp << "set title 'μ = " << g(grid.mu()[mus[k]]) << "'\n"
+    gp << "set title " << support::gnuplot_quoted("μ = " + g(grid.mu()[mus[k]])) << "\n"
        << "plot " << support::gnuplot_quoted(name + ".dat") << " index " << k << " using 1:2:3 with image notitle\n";
   }
   gp << "unset multiplot\n";
@@ -258,9 +263,11 @@ void write_curves(const StudyResult& study, const CurveCase& cc, const fs::path&
   }
   std::ostringstream gp;
   script_head(gp, terminal, name, 1500, 950);
-  gp << "set multiplot layout 2,3 title \"F1, F2, M against s at μ = " << g(cc.mu) << ", ψ = "
-     << g(cc.psi * kDeg) << "° (top: Ω > 0, bottom: Ω < 0); the y range follows exact, curves that leave "
-        "it are off scale\" font ',13'\n"
+  gp << "set multiplot layout 2,3 title "
+     << support::gnuplot_quoted("F1, F2, M against s at μ = " + g(cc.mu) + ", ψ = " + g(cc.psi * kDeg) +
+                                "° (top: Ω > 0, bottom: Ω < 0); the y range follows exact, curves that leave it "
+                                "are off scale")
+     << " font ',13'\n"
      << "set logscale x\nset format x '10^{%L}'\nset xlabel 's = U/(a|Ω|)'\nset grid\n"
      << "set key right bottom font ',9' spacing 1.1\n";
   const char* comp[] = {"F1/(kN)", "F2/(kN)", "M/(kNa)"};
@@ -270,8 +277,8 @@ void write_curves(const StudyResult& study, const CurveCase& cc, const fs::path&
       const auto& ex = values[isign][0][c];
       const auto [lo_it, hi_it] = std::minmax_element(ex.begin(), ex.end());
       const double span = std::max(*hi_it - *lo_it, 0.1);
-      gp << "set title '" << comp[c] << ",  Ω " << (isign == 1 ? "> 0" : "< 0") << "'\n"
-         << "set ylabel '" << comp[c] << "'\n"
+      gp << "set title " << support::gnuplot_quoted(std::string(comp[c]) + ",  Ω " + (isign == 1 ? "> 0" : "< 0"))
+         << "\nset ylabel " << support::gnuplot_quoted(comp[c]) << "\n"
          << "set yrange [" << g(*lo_it - 0.5 * span) << ":" << g(*hi_it + 0.5 * span) << "]\n"
          << (c == 0 ? "set key\n" : "unset key\n") << "plot ";
       for (std::size_t j = 0; j < names.size(); ++j) {

@@ -50,10 +50,9 @@ accuracy::GridSpec grid_of(const AccuracyOptions& opt) {
   grid.psi_points = count("--psi-points", opt.psi_points);
   const long double points = static_cast<long double>(grid.s_points) * grid.mu_points * grid.psi_points * 2;
   if (points > kMaxGridPoints)
-    throw std::invalid_argument("--s-points x --mu-points x --psi-points x 2 = " +
-                                support::message_number(static_cast<double>(points)) +
-                                " grid points is invalid: at most " + std::to_string(kMaxGridPoints) +
-                                " (each keeps ~170 bytes per law in memory)");
+    throw support::invalid_value("--s-points x --mu-points x --psi-points x 2", static_cast<double>(points),
+                                 "it must be at most " + std::to_string(kMaxGridPoints) +
+                                     " grid points (each keeps ~170 bytes per law in memory)");
   return grid;
 }
 

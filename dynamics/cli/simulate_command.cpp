@@ -53,7 +53,9 @@ class ProgressBar final : public dynamics::Observer {
     const int filled = static_cast<int>(f * kProgressBarWidth);
     std::string bar(static_cast<std::size_t>(filled), '#');
     bar.resize(kProgressBarWidth, '.');
-    std::fprintf(stderr, "\r[%s] t = %.4g / %.4g s", bar.c_str(), t, t_end_);
+    const std::string line =
+        "\r[" + bar + "] t = " + support::significant(t, 4) + " / " + support::significant(t_end_, 4) + " s";
+    std::fputs(line.c_str(), stderr);
     std::fflush(stderr);
   }
 
@@ -98,9 +100,10 @@ void run(const SimulateOptions& opt) {
   if (!result.output_error.empty())
     throw support::OutputError(result.output_error + "; the run stopped at t = " + support::message_number(s.t_final) +
                                " s (" + reason + "), see " + result.summary_json.string());
-  std::printf("%s: %s at t = %.6g s; %ld steps, %ld RHS calls, %.3g s wall; wrote %s, %s\n",
-              scenario.name.c_str(), reason.c_str(), s.t_final, s.steps, s.rhs_calls, s.wall_time,
-              result.trajectory_csv.c_str(), result.summary_json.c_str());
+  std::printf("%s: %s at t = %s s; %ld steps, %ld RHS calls, %s s wall; wrote %s, %s\n", scenario.name.c_str(),
+              reason.c_str(), support::significant(s.t_final, 6).c_str(), s.steps, s.rhs_calls,
+              support::significant(s.wall_time, 3).c_str(), result.trajectory_csv.c_str(),
+              result.summary_json.c_str());
   const bool normal = s.reason == dynamics::Termination::t_end || s.reason == dynamics::Termination::rest ||
                       s.reason == dynamics::Termination::rolling;
   if (!normal) {

@@ -15,6 +15,7 @@
 #include "dynamics/body.h"
 #include "dynamics/scenario_run.h"
 #include "friction/support/checked_output.h"
+#include "friction/support/errors.h"
 #include "friction/support/number_format.h"
 
 namespace frictionlab::dynamics::paper {
@@ -110,7 +111,7 @@ std::string plot_data_stem(const RunSpec& spec) { return spec.group() + "-" + sp
 void RunnerOptions::validate() const {
   thresholds.validate();
   if (trajectory_every < 1)
-    throw std::invalid_argument("trajectory_every = " + std::to_string(trajectory_every) + " is invalid: it must be >= 1");
+    throw support::invalid_value("trajectory_every", static_cast<long long>(trajectory_every), "it must be >= 1");
 }
 
 std::string keep_finished_run(RunResult& r, const RunnerOptions& options) {

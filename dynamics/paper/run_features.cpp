@@ -6,13 +6,13 @@
 #include <stdexcept>
 #include <string>
 
+#include "friction/support/errors.h"
+
 namespace frictionlab::dynamics::paper {
 namespace {
 
 void require(bool ok, const char* name, double value, const char* rule) {
-  if (!ok)
-    throw std::invalid_argument(std::string("feature threshold ") + name + " = " + std::to_string(value) +
-                                " is invalid: " + rule);
+  if (!ok) throw support::invalid_value(std::string("feature threshold ") + name, value, rule);
 }
 
 int sign(double x) { return x > 0.0 ? 1 : (x < 0.0 ? -1 : 0); }

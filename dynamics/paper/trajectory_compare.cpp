@@ -7,6 +7,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "friction/support/errors.h"
+
 namespace frictionlab::dynamics::paper {
 namespace {
 
@@ -45,9 +47,9 @@ Divergence first_divergence(const std::vector<double>& ta, const std::vector<dou
                             const std::vector<double>& tb, const std::vector<double>& yb, double threshold,
                             double dt) {
   if (!(std::isfinite(dt) && dt > 0.0))
-    throw std::invalid_argument("comparison grid step dt = " + std::to_string(dt) + " is invalid: it must be > 0 s");
+    throw support::invalid_value("comparison grid step dt", dt, "it must be finite and > 0 s");
   if (!(std::isfinite(threshold) && threshold >= 0.0))
-    throw std::invalid_argument("divergence threshold = " + std::to_string(threshold) + " is invalid: it must be >= 0");
+    throw support::invalid_value("divergence threshold", threshold, "it must be finite and >= 0");
   Divergence d;
   if (ta.empty() || tb.empty()) return d;
   const double start = std::max(ta.front(), tb.front());

@@ -64,8 +64,9 @@ TEST(EvaluateCsv, AnyColumnOrderExtraColumnsPassedThroughLosslessOutput) {
   EXPECT_EQ(std::strtod(std::string(fields[9]).c_str(), nullptr), direct.F1);
   EXPECT_EQ(std::strtod(std::string(fields[10]).c_str(), nullptr), direct.F2);
   EXPECT_EQ(std::strtod(std::string(fields[11]).c_str(), nullptr), direct.M);
-  // Pure sliding: F1 = kN = 0.1 exactly, written without loss.
-  EXPECT_EQ(row2, "p2,0.1,1,0,1,1,0,1,plain,0.10000000000000001,0,0");
+  // Pure sliding: F1 = kN is the double nearest 0.1, written in the shortest text that reads back
+  // to it (as the input wrote it), not as 0.10000000000000001.
+  EXPECT_EQ(row2, "p2,0.1,1,0,1,1,0,1,plain,0.1,0,0");
 }
 
 TEST(EvaluateCsv, ErrorsNameTheLineAndWriteNothing) {
