@@ -14,6 +14,7 @@ BodyOnPlane::BodyOnPlane(Body body, const PlaneContact& plane, const friction::F
       inertia_(body_.A, body_.A, body_.C),
       inv_inertia_(1.0 / body_.A, 1.0 / body_.A, 1.0 / body_.C) {
   plane_.validate();
+  if (plane_.patch == PatchModel::hertz) hertz_.emplace(plane_.E_star);
 }
 
 ContactState BodyOnPlane::contact_state(const StateVector& x) const {
@@ -29,9 +30,17 @@ ContactState BodyOnPlane::contact_state(const StateVector& x) const {
   c.U = slip.norm();
   c.Omega = w.dot(c.gamma);
   c.in_contact = eps < 0.0;
-  c.N = plane_.normal_force(eps);
-
-  const PatchShape patch = ContactGeometry::patch(c.point, c.gamma, c.in_contact ? -eps : 0.0);
+  PatchShape patch;
+  Eigen::Vector3d hertz_torque = Eigen::Vector3d::Zero();
+  if (hertz_) {  // [contact] patch = "hertz" (dynamics/hertz_patch.h)
+    const HertzContact h = hertz_->evaluate(geometry_, c.point, c.gamma, eps);
+    c.N = h.N;
+    patch = h.patch;
+    hertz_torque = h.torque;
+  } else {
+    c.N = plane_.normal_force(eps);
+    patch = ContactGeometry::patch(c.point, c.gamma, c.in_contact ? -eps : 0.0);
+  }
   // Below the smallest normal double the slip direction is noise: treat it as zero slip, e1 = major.
   if (c.U >= std::numeric_limits<double>::min()) {
     c.e1 = slip / c.U;
@@ -50,6 +59,7 @@ ContactState BodyOnPlane::contact_state(const StateVector& x) const {
 
   c.force = c.N * c.gamma;
   c.torque = c.point.r.cross(c.force);
+  if (hertz_) c.torque += hertz_torque;
   if (c.N > 0.0) {
     c.a = patch.a;
     c.b = patch.b;
@@ -86,7 +96,8 @@ double BodyOnPlane::kinetic_energy(const StateVector& x) const {
 double BodyOnPlane::energy(const StateVector& x, const ContactState& c) const {
   const double eps = height(x);
   const double h = eps - c.point.r.dot(c.gamma);  // height of the centre of mass
-  return kinetic_energy(x) + body_.mass * plane_.g * h + plane_.spring_energy(eps);
+  const double spring = hertz_ ? hertz_->energy(c.point, eps) : plane_.spring_energy(eps);
+  return kinetic_energy(x) + body_.mass * plane_.g * h + spring;
 }
 
 }  // namespace frictionlab::dynamics

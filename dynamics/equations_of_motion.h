@@ -19,14 +19,18 @@
 // The state also carries W_slide' = F1 U and W_spin' = M Omega (dynamics/state.h).
 //
 // Energy: E = m v^2/2 + omega.J omega/2 + m g h + (2/5) lambda |eps|^(5/2), h = eps - r.gamma the
-// height of the centre of mass; along solutions E' = -(F1 U + M Omega) exactly.
+// height of the centre of mass; along solutions E' = -(F1 U + M Omega) exactly. With
+// [contact] patch = "hertz" the patch, N and the spring energy come from dynamics/hertz_patch.h
+// (lambda then depends on gamma3, and the torque that makes that contact conservative is added).
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>  // cross products
+#include <optional>
 
 #include "dynamics/body.h"
 #include "dynamics/contact_geometry.h"
 #include "dynamics/hertz_contact.h"
+#include "dynamics/hertz_patch.h"
 #include "dynamics/state.h"
 #include "friction/law.h"
 
@@ -83,6 +87,7 @@ class BodyOnPlane {
   PlaneContact plane_;
   const friction::FrictionLaw& law_;
   ContactGeometry geometry_;
+  std::optional<HertzNormalContact> hertz_;  ///< set when plane.patch = hertz
   Eigen::Vector3d inertia_;      ///< (A, A, C)
   Eigen::Vector3d inv_inertia_;  ///< (1/A, 1/A, 1/C)
 };

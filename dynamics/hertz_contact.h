@@ -1,15 +1,24 @@
 #pragma once
-// The compliant plane: Hertz normal force, eq. (6), its potential, and the friction coefficient.
+// The compliant plane: Hertz normal force, eq. (6), its potential, and the friction coefficient;
+// and which contact model gives the patch and the normal force ([contact] patch).
 
 #include <cmath>
 
 namespace frictionlab::dynamics {
+
+/// [contact] patch: the paper's section hypothesis (eq. (6) with one lambda; patch from
+/// dynamics/contact_geometry.h), or Hertz's theory at the contact point (dynamics/hertz_patch.h).
+enum class PatchModel { section, hertz };
 
 /// Parameters of the plane and of gravity. SI units.
 struct PlaneContact {
   double k = 0.0;        ///< Coulomb friction coefficient, dimensionless, finite, >= 0
   double lambda = 0.0;   ///< Hertz stiffness, N/m^(3/2), finite, > 0
   double g = 9.81;       ///< gravitational acceleration, m/s^2, finite, >= 0
+  PatchModel patch = PatchModel::section;
+  /// Effective modulus E*, Pa (patch = hertz only, finite, > 0). `lambda` is then Hertz's
+  /// stiffness at the reference orientation (docs/contact-models.md), used for the body's scales.
+  double E_star = 0.0;
 
   /// Throws std::invalid_argument naming the scenario key (contact.k, ...) and the rule.
   void validate() const;

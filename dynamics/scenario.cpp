@@ -10,6 +10,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "dynamics/patch_model.h"
 #include "dynamics/scenario_limits.h"
 #include "friction/registry.h"
 #include "friction/support/errors.h"
@@ -239,10 +240,18 @@ Scenario build(const toml::table& root, const std::string& source, const std::ve
   // [contact]
   Section contact(section_table(root, "contact", true), "contact");
   s.contact.k = contact.number("k");
-  s.contact.lambda = contact.number("lambda");
+  // The contact model and its stiffness (dynamics/patch_model.h).
+  const PatchModelSpec patch{.patch = contact.string("patch", "section"),
+                             .lambda = contact.optional_number("lambda"),
+                             .E1 = contact.optional_number("E1"),
+                             .nu1 = contact.optional_number("nu1"),
+                             .E2 = contact.optional_number("E2"),
+                             .nu2 = contact.optional_number("nu2"),
+                             .lambda_gamma3 = contact.optional_number("lambda_gamma3")};
   s.contact.g = contact.number("g", 9.81);
   s.law = contact.string("law", "exact");
-  contact.check_no_unknown_keys({"k", "lambda", "g", "law"});
+  contact.check_no_unknown_keys({"k", "lambda", "g", "law", "patch", "E1", "nu1", "E2", "nu2", "lambda_gamma3"});
+  apply_patch_model(patch, s.body, s.contact);
   s.contact.validate();
   check_contact(s.contact, s.body, extent);
   check_law(s.law);

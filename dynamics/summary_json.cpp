@@ -52,6 +52,8 @@ support::Json summary_json(const Scenario& scenario, const RunSummary& s) {
                {"C", body.C},
                {"homogeneous_centroid", body.homogeneous.centroid}};
   j["contact"] = {{"k", scenario.contact.k}, {"lambda", scenario.contact.lambda}, {"g", scenario.contact.g}};
+  j["contact"]["patch"] = scenario.contact.patch == PatchModel::hertz ? "hertz" : "section";
+  if (scenario.contact.patch == PatchModel::hertz) j["contact"]["E_star"] = scenario.contact.E_star;
   j["integrator"] = {{"method", scenario.run.integrator.method},
                      {"abs_tol", scenario.run.integrator.abs_tol},
                      {"rel_tol", scenario.run.integrator.rel_tol},
