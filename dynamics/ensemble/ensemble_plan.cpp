@@ -72,13 +72,13 @@ EnsemblePlan EnsemblePlan::make(const Study& study) {
         throw support::invalid_value("set[" + std::to_string(i) + "]", std::string_view(study.set[i]),
                                      "the laws are the study's `laws`");
     const std::string text = read_text(study.scenario);
-    p.hash_ = hex16(fnv1a64(text, fnv1a64(std::string_view("\0", 1), fnv1a64(study.text))));
     try {
       p.document_ = std::make_shared<const ScenarioDocument>(ScenarioDocument::parse(text, study.scenario.string()));
       p.base_ = std::make_shared<const Scenario>(p.document_->resolve(study.set));
     } catch (const std::invalid_argument& e) {
       throw std::invalid_argument(std::string("scenario = '") + study.scenario.string() + "' (with the study's set) is invalid: " + e.what());
     }
+    p.hash_ = hex16(fnv1a64(p.base_->resolved_toml, fnv1a64(std::string_view("\0", 1), fnv1a64(study.canonical))));
     p.rate_scale_ = body_scales(p.base_->body, p.base_->contact).rate;
 
     for (std::size_t i = 0; i < study.laws.size(); ++i) {

@@ -5,8 +5,9 @@
 // perturbed initial vectors (dynamics/ensemble/replica.h) and contact.law = the law.
 //
 // Run index  i = (start * replicas + replica) * laws + law. It identifies a run within a study;
-// the study's hash (FNV-1a 64 of the study file's text and the base scenario's text) identifies
-// the study, so that `--resume` refuses a folder made by another study.
+// the study's hash identifies the study, so that `--resume` refuses a folder made by another one:
+// FNV-1a 64 of the study as parsed and of the base scenario as resolved with the study's `set`
+// (both written back as TOML: a changed value changes the hash, a reworded comment does not).
 //
 // Tasks: a task is one start and one pair of replicas (2p, 2p + 1) with every law — the runs
 // that are compared along the trajectory: each law against the reference law on the same replica
@@ -69,7 +70,7 @@ class EnsemblePlan {
   [[nodiscard]] Task task(long index) const;
   [[nodiscard]] long pairs_per_start() const { return (replicas() + 1) / 2; }
 
-  /// 16 hexadecimal digits: FNV-1a 64 of the study file's text, a NUL, the base scenario's text.
+  /// 16 hexadecimal digits: FNV-1a 64 of Study::canonical, a NUL, the resolved base scenario.
   [[nodiscard]] const std::string& hash() const { return hash_; }
   /// The base scenario resolved with the study's `set` (its law as the file says).
   [[nodiscard]] const Scenario& base() const { return *base_; }

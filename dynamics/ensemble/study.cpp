@@ -286,6 +286,9 @@ Study parse_study(std::string_view text, const std::filesystem::path& source, co
   try {
     Study s = build(root, source, folder);
     s.text = std::string(text);
+    std::ostringstream canonical;
+    canonical << root;
+    s.canonical = canonical.str();
     return s;
   } catch (const std::invalid_argument& e) {
     throw std::invalid_argument(source.string() + ": " + e.what());

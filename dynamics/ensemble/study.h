@@ -70,7 +70,10 @@ struct Study {
   long replicas = 1;                 ///< copies of each start (>= 1); replica 0 is the start itself
   double replica_size = 0.0;         ///< the relative size of the replicas' perturbation
   double trajectory_dt = 0.1;        ///< s, interval of the decimated trajectories (--hdf5)
-  std::string text;                  ///< the study file's text (for the study's hash)
+  std::string text;                  ///< the study file's text
+  /// The study as parsed, written back as TOML (comments and layout dropped, keys sorted): what
+  /// the study's hash is taken of, so that a reworded comment does not change the study.
+  std::string canonical;
 
   [[nodiscard]] const std::string& reference_law() const { return laws.front(); }
 };

@@ -85,6 +85,7 @@ TEST(EnsemblePlan, HashIdentifiesTheStudyAndItsScenario) {
   EXPECT_EQ(a.hash().size(), 16u);
   EXPECT_EQ(EnsemblePlan::make(study(kGrid)).hash(), a.hash());
   EXPECT_NE(EnsemblePlan::make(study("seed = 2\n" + kGrid)).hash(), a.hash());
+  EXPECT_EQ(EnsemblePlan::make(study("# a comment\n" + kGrid)).hash(), a.hash()) << "comments do not count";
   // The same study text over another scenario file.
   const auto dir = std::filesystem::temp_directory_path() / "frictionlab_plan_hash";
   std::filesystem::create_directories(dir / "studies");
@@ -93,8 +94,15 @@ TEST(EnsemblePlan, HashIdentifiesTheStudyAndItsScenario) {
                              std::filesystem::copy_options::overwrite_existing);
   const auto other = [&] { return EnsemblePlan::make(parse_study(kGrid, "t.toml", dir / "studies")).hash(); };
   EXPECT_EQ(other(), a.hash());
-  std::ofstream(dir / "scenarios/egg-printed-a.toml", std::ios::app) << "# changed\n";
-  EXPECT_NE(other(), a.hash());
+  std::ofstream(dir / "scenarios/egg-printed-a.toml", std::ios::app) << "# a comment\n";
+  EXPECT_EQ(other(), a.hash()) << "comments do not count";
+  {
+    std::ifstream in(dir / "scenarios/egg-printed-a.toml");
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    text.replace(text.find("k = 0.1"), 7, "k = 0.2");
+    std::ofstream(dir / "scenarios/egg-printed-a.toml", std::ios::trunc) << text;
+  }
+  EXPECT_NE(other(), a.hash()) << "a changed value of the scenario";
   std::filesystem::remove_all(dir);
 }
 
