@@ -3,14 +3,18 @@
 #include <chrono>
 #include <stdexcept>
 
+#include "dynamics/ensemble/ensemble_report.h"
 #include "dynamics/ensemble/mpi_ensemble.h"
 #include "dynamics/ensemble/thread_pool.h"
 
 namespace frictionlab::dynamics::ensemble {
 
 JobOutcome finish_job(EnsembleSession& session, const JobOptions& options, JobOutcome outcome) {
-  (void)options;
   outcome.summary = session.finish();
+  if (!outcome.summary.complete) return outcome;
+  const ReportOutcome report = write_report(session.plan(), options.out, options.command, options.figures);
+  outcome.report = report.report;
+  outcome.figure_errors = report.figures.errors;
   return outcome;
 }
 

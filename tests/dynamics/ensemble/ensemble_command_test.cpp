@@ -6,6 +6,7 @@
 #include <signal.h>
 
 #include <algorithm>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -42,14 +43,24 @@ TEST(EnsembleCommand, SmokeStudyGivesTheSameRunsWithOneThreadAndWithAll) {
   const auto r1 = run_frictionlab("ensemble " + kSmoke + " --out " + one.string() + " --threads 1");
   ASSERT_EQ(r1.exit_code, 0) << r1.err;
   EXPECT_NE(r1.out.find("ensemble: 8 of 8 runs done"), std::string::npos) << r1.out;
-  const auto r2 = run_frictionlab("ensemble " + kSmoke + " --out " + all.string() + " --threads 0");
+  const auto r2 = run_frictionlab("ensemble " + kSmoke + " --out " + all.string() + " --threads 0 --no-figures");
   ASSERT_EQ(r2.exit_code, 0) << r2.err;
   const auto a = runs_without_wall_time(one / "runs.csv");
   ASSERT_EQ(a.size(), 9u) << "a header and 8 runs";
   EXPECT_EQ(runs_without_wall_time(all / "runs.csv"), a);
+  EXPECT_TRUE(fs::exists(all / "figures" / "map-changes.gp"));
+  EXPECT_FALSE(fs::exists(all / "figures" / "map-changes.png")) << "--no-figures: scripts, no gnuplot";
   // Sorted by run index once complete; every law ran on every replica of every start.
   for (std::size_t i = 1; i < a.size(); ++i) EXPECT_EQ(a[i].substr(0, a[i].find(',')), std::to_string(i - 1));
   EXPECT_TRUE(fs::exists(one / "ensemble.json"));
+  // The report, and the maps of its two varied keys (drawn when gnuplot is there).
+  const std::string report = slurp(one / "report.md");
+  EXPECT_NE(report.find("## Does the law change the motion?"), std::string::npos) << report;
+  EXPECT_NE(report.find("## Maps over"), std::string::npos) << report;
+  EXPECT_TRUE(fs::exists(one / "figures" / "map-changes.gp"));
+  if (std::system("command -v gnuplot >/dev/null 2>&1") == 0) {
+    EXPECT_GT(fs::file_size(one / "figures" / "map-changes.png"), 0u) << r1.err;
+  }
   fs::remove_all(one);
   fs::remove_all(all);
 }
