@@ -68,6 +68,14 @@ void run(const EnsembleCliOptions& opt) {
               outcome.ranks == 1 ? "" : "s", outcome.threads, outcome.threads == 1 ? "" : "s",
               (std::filesystem::path(opt.out) / "runs.csv").c_str(),
               outcome.report.empty() ? "" : (", " + outcome.report.string()).c_str());
+  if (outcome.ranks > 1) {
+    const ens::CoordinationCost& c = outcome.coordination;
+    std::fprintf(stderr,
+                 "ensemble: coordination: rank 0 spent %.4f s on the %ld runs the other ranks sent (%.3f ms a run); "
+                 "they waited %.4f s in all for %ld tasks\n",
+                 c.busy, c.runs_received, c.runs_received > 0 ? 1e3 * c.busy / static_cast<double>(c.runs_received) : 0.0,
+                 c.worker_wait, c.tasks_sent);
+  }
   for (const auto& e : outcome.figure_errors) std::fprintf(stderr, "frictionlab: ensemble: %s\n", e.c_str());
   if (!s.output_error.empty()) {
     std::fprintf(stderr, "frictionlab: ensemble: the output failed: %s\n", support::one_line(s.output_error).c_str());

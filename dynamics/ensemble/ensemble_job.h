@@ -25,6 +25,14 @@ struct JobOptions {
   std::string command;          ///< as typed, for the manifest and the report
 };
 
+/// What coordinating the MPI ranks cost (rank 0's view; zero without MPI).
+struct CoordinationCost {
+  double busy = 0.0;         ///< s rank 0 spent handling the other ranks' messages
+  long runs_received = 0;    ///< finished runs the other ranks sent
+  long tasks_sent = 0;       ///< tasks handed to the other ranks
+  double worker_wait = 0.0;  ///< s the other ranks waited, in all, between asking for a task and getting it
+};
+
 struct JobOutcome {
   SessionSummary summary;
   bool interrupted = false;
@@ -33,6 +41,7 @@ struct JobOutcome {
   int threads = 1;             ///< worker threads of this process
   int ranks = 1;               ///< MPI ranks (1 without MPI)
   double wall_time = 0.0;      ///< s
+  CoordinationCost coordination;
   std::filesystem::path report;  ///< DIR/report.md, when written
   std::vector<std::string> figure_errors;  ///< figures that could not be drawn
 };

@@ -152,18 +152,24 @@ DecimatedTrajectory unpack(const std::vector<double>& data) {
   return t;
 }
 
-// Ranks > 0: ask, run, send, ask again.
-void worker_loop(const EnsemblePlan& plan, const JobOptions& options) {
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+// Ranks > 0: ask, run, send, ask again. Returns the seconds spent waiting for answers.
+double worker_loop(const EnsemblePlan& plan, const JobOptions& options) {
   ExecuteOptions exec;
   exec.trajectories = options.trajectories;
   exec.cancel = options.cancel;
+  double waited = 0.0;
   for (;;) {
+    const auto asked = Clock::now();
     MPI_Send(nullptr, 0, MPI_LONG, 0, kRequest, MPI_COMM_WORLD);
     MPI_Status st;
     MPI_Probe(0, MPI_ANY_TAG, MPI_COMM_WORLD, &st);
+    waited += seconds_since(asked);
     if (st.MPI_TAG == kStop) {
       MPI_Recv(nullptr, 0, MPI_LONG, 0, kStop, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
-      return;
+      return waited;
     }
     int n = 0;
     MPI_Get_count(&st, MPI_LONG, &n);
@@ -181,14 +187,15 @@ void worker_loop(const EnsemblePlan& plan, const JobOptions& options) {
     });
     if (!completed) {
       MPI_Send(nullptr, 0, MPI_LONG, 0, kBye, MPI_COMM_WORLD);
-      return;
+      return waited;
     }
   }
 }
 
 // Rank 0: serves the other ranks from the session's queue and records what they send, while its
-// own worker threads take tasks from the same queue.
-void coordinate(EnsembleSession& session, int ranks, int local_threads, const JobOptions& options) {
+// own worker threads take tasks from the same queue. Counts what serving costs.
+void coordinate(EnsembleSession& session, int ranks, int local_threads, const JobOptions& options,
+                CoordinationCost& cost) {
   const std::size_t keys = session.plan().study().vary.size();
   std::vector<std::thread> local;
   std::atomic<int> local_running{local_threads};
@@ -216,6 +223,7 @@ void coordinate(EnsembleSession& session, int ranks, int local_threads, const Jo
       std::this_thread::sleep_for(kPoll);
       continue;
     }
+    const auto busy_from = Clock::now();
     const int from = st.MPI_SOURCE;
     switch (st.MPI_TAG) {
       case kRequest: {
@@ -229,6 +237,7 @@ void coordinate(EnsembleSession& session, int ranks, int local_threads, const Jo
         std::vector<long> message{order->task.index};
         message.insert(message.end(), order->todo.begin(), order->todo.end());
         MPI_Send(message.data(), static_cast<int>(message.size()), MPI_LONG, from, kTask, MPI_COMM_WORLD);
+        ++cost.tasks_sent;
         break;
       }
       case kRow: {
@@ -245,6 +254,7 @@ void coordinate(EnsembleSession& session, int ranks, int local_threads, const Jo
           run.trajectory = unpack(data);
         }
         session.record(std::move(run));
+        ++cost.runs_received;
         break;
       }
       case kBye:
@@ -259,6 +269,7 @@ void coordinate(EnsembleSession& session, int ranks, int local_threads, const Jo
         MPI_Recv(junk.data(), n, MPI_BYTE, from, st.MPI_TAG, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
       }
     }
+    cost.busy += seconds_since(busy_from);
   }
   for (auto& t : local) t.join();
   if (failure) std::rethrow_exception(failure);
@@ -299,7 +310,8 @@ JobOutcome run_ensemble_job_mpi(const JobOptions& options) {
   outcome.threads = options.threads > 0 ? options.threads : 1;
   if (!root) {
     outcome.writer = false;
-    worker_loop(*plan, options);
+    double waited = worker_loop(*plan, options);
+    MPI_Reduce(&waited, nullptr, 1, MPI_DOUBLE, MPI_SUM, 0, MPI_COMM_WORLD);
     outcome.interrupted = options.cancel && options.cancel->load();
     outcome.wall_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return outcome;
@@ -322,9 +334,14 @@ JobOutcome run_ensemble_job_mpi(const JobOptions& options) {
       MPI_Recv(nullptr, 0, MPI_LONG, MPI_ANY_SOURCE, kRequest, MPI_COMM_WORLD, &st);
       MPI_Send(nullptr, 0, MPI_LONG, st.MPI_SOURCE, kStop, MPI_COMM_WORLD);
     }
+    double none = 0.0;
+    double waited = 0.0;
+    MPI_Reduce(&none, &waited, 1, MPI_DOUBLE, MPI_SUM, 0, MPI_COMM_WORLD);  // as the workers do
     throw;
   }
-  coordinate(*session, mpi.size(), outcome.threads, options);
+  coordinate(*session, mpi.size(), outcome.threads, options, outcome.coordination);
+  double none = 0.0;
+  MPI_Reduce(&none, &outcome.coordination.worker_wait, 1, MPI_DOUBLE, MPI_SUM, 0, MPI_COMM_WORLD);
   outcome.interrupted = options.cancel && options.cancel->load();
   outcome = finish_job(*session, options, outcome);
   outcome.wall_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -65,6 +65,17 @@ TEST(EnsembleMpi, AResumedMpiJobRedoesOnlyWhatIsMissing) {
   fs::remove_all(dir);
 }
 
+TEST(EnsembleMpi, AFolderThatCannotBeUsedStopsEveryRank) {
+  // runs.csv exists and --resume is missing: rank 0 refuses after the workers have started asking.
+  const fs::path dir = testing::fresh_temp_dir("ensemble_mpi_exists");
+  ASSERT_EQ(testing::run_frictionlab("ensemble " + kSmoke + " --out " + dir.string() + " --threads 1").exit_code, 0);
+  const auto r = mpirun(2, "ensemble " + kSmoke + " --out " + dir.string());
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_NE(r.err.find("frictionlab: error: " + (dir / "runs.csv").string() + " exists: add --resume"), std::string::npos)
+      << r.err;
+  fs::remove_all(dir);
+}
+
 TEST(EnsembleMpi, ABadStudyIsOneLineFromRankZero) {
   const fs::path dir = testing::fresh_temp_dir("ensemble_mpi_bad");
   const auto r = mpirun(2, "ensemble /no/such/study.toml --out " + dir.string());
