@@ -80,16 +80,18 @@ std::string map_script(const std::string& stem, const std::string& title, const 
   const int rows = static_cast<int>((panels.size() + 1) / 2);
   std::ostringstream s;
   s << "# " << stem << ".png: " << title << ". Regenerate: gnuplot " << stem << ".gp\n"
-    << terminal(cols * 560, rows * 430 + 60) << "\nset output " << gnuplot_quoted(stem + ".png") << "\n"
-    << "set style fill solid 1.0 noborder\nset datafile missing 'NaN'\nset tics out\n"
+    << terminal(cols * 620, rows * 430 + 60) << "\nset output " << gnuplot_quoted(stem + ".png") << "\n"
+    << "set style fill solid 1.0 noborder\nset datafile missing 'NaN'\nset tics out\nset rmargin 14\n"
     << "set xlabel " << gnuplot_quoted(a.x_key) << "\nset ylabel " << gnuplot_quoted(a.y_key) << "\n"
     << (a.x_log ? "set logscale x\n" : "") << (a.y_log ? "set logscale y\n" : "") << palette
     << "set multiplot layout " << rows << "," << cols << " title " << gnuplot_quoted(title) << " font ',12'\n";
   const auto ex = edges(a.x, a.x_log);
   const auto ey = edges(a.y, a.y_log);
   for (const auto& p : panels) {
-    s << "set title " << gnuplot_quoted(p.title) << "\nset xrange [" << num(ex.front()) << ":" << num(ex.back())
-      << "]\nset yrange [" << num(ey.front()) << ":" << num(ey.back()) << "]\n"
+    const auto [x0, x1] = std::minmax_element(ex.begin(), ex.end());
+    const auto [y0, y1] = std::minmax_element(ey.begin(), ey.end());
+    s << "set title " << gnuplot_quoted(p.title) << "\nset xrange [" << num(*x0) << ":" << num(*x1) << "]\nset yrange ["
+      << num(*y0) << ":" << num(*y1) << "]\n"
       << "plot " << gnuplot_quoted(p.data) << " using 1:2:3:4:5:6 with boxxyerror lc rgb '#bdbdbd' notitle, \\\n"
       << "     " << gnuplot_quoted(p.data) << " using 1:2:3:4:5:6:7 with boxxyerror lc palette notitle\n";
   }
@@ -250,7 +252,7 @@ void map_figures(Writer& w, const std::string& title, const std::vector<std::str
                             std::to_string(n[1]) + ", chaotic " + std::to_string(n[3]) + " of " + std::to_string(m.cells()),
                         file});
     }
-    w.figure("map-changes", map_script("map-changes", title + ": does the law change where the egg ends?", a, panels,
+    w.figure("map-changes", map_script("map-changes", title + ": where does a law change the outcome class?", a, panels,
                                        discrete_palette(named)));
   }
 }
