@@ -13,6 +13,8 @@
 #include <thread>
 
 #include "dynamics/ensemble/chaos_floor_rule.h"
+#include "dynamics/ensemble/cluster_prediction.h"
+#include "dynamics/ensemble/progress_meter.h"
 #include "dynamics/ensemble/feature_comparison.h"
 #include "dynamics/ensemble/outcome_map.h"
 #include "dynamics/ensemble/sample_statistics.h"
@@ -22,6 +24,10 @@
 
 namespace frictionlab::dynamics::ensemble {
 namespace {
+
+// Coordination per task assumed in the predictions: rank 0 handles a request and a task's rows in
+// well under a millisecond (docs/ensembles.md §6); 1 ms is a generous bound.
+constexpr double kPredictionTaskOverhead = 1e-3;
 
 std::string n3(double x) { return std::isnan(x) ? "–" : support::significant(x, 3); }
 std::string n4(double x) { return std::isnan(x) ? "–" : support::significant(x, 4); }
@@ -240,7 +246,16 @@ void cost_section(std::ostringstream& s, const std::vector<std::string>& laws, c
       << support::fixed(total, 1) << " | " << n3(quantile(calls, 0.5)) << " | "
       << (total_calls > 0 ? support::fixed(1e9 * total / total_calls, 0) : "–") << " |\n";
   }
-  s << "\n";
+  const std::vector<double> tasks = task_costs(rows);
+  s << "\n**Predicted wall time on P cores** (dynamics/ensemble/cluster_prediction.h): the " << tasks.size()
+    << " tasks (a start, a pair of replicas, every law) handed out in plan order to the first free core, each "
+       "costing its runs' wall times above plus "
+    << support::significant(1e3 * kPredictionTaskOverhead, 2)
+    << " ms of coordination; one worker per core as fast as this one; start-up and I/O not counted.\n\n"
+       "| cores | 1 | 2 | 64 | 1024 |\n|---|---|---|---|---|\n| wall time |";
+  for (const long p : {1L, 2L, 64L, 1024L})
+    s << " " << ProgressMeter::duration(predicted_wall_time(tasks, p, kPredictionTaskOverhead)) << " |";
+  s << "\n\n";
 }
 
 }  // namespace

@@ -34,7 +34,7 @@ TEST(EnsembleReport, SaysWhatRanHowItEndedAndWhatChanged) {
                                  "### Verdicts at a glance", "| outcome class | **changes** |",
                                  "## Divergence times against the floor", "## Maps over `initial.gamma3` × `initial.omega3`",
                                  "| pade-printed | 0 | 0 | **2** | 0 | 2 |", "![map-changes](figures/map-changes.png)",
-                                 "## Cost", "| exact | 4 | 0.5 | 0.5 | 0.5 | 2.0 | 1e+03 | 500000 |", "a machine"})
+                                 "## Cost", "**Predicted wall time on P cores**", "| cores | 1 | 2 | 64 | 1024 |", "| exact | 4 | 0.5 | 0.5 | 0.5 | 2.0 | 1e+03 | 500000 |", "a machine"})
     EXPECT_NE(md.find(part), std::string::npos) << "missing: " << part << "\n" << md;
 }
 
