@@ -11,6 +11,11 @@
 //                 produces between two equally exact halves;
 //   within chaos  p >= kSignificance AND distance <= kFloorFactor x floor;
 //   unclear       one of the two holds and not the other;
+//   negligible    (before the others) the distance is at most the feature's resolution: the
+//                 smallest difference that means anything for it (dynamics/ensemble/feature_comparison.h:
+//                 1e-3 in gamma3, 0.1 deg of tilt, 0.01 s, ...). A law that moves the final gamma3 of
+//                 an egg at rest on its pole by 3e-8 differs from exact beyond a floor of 1e-11, and
+//                 this says so without calling it a change of the motion;
 //   n/a           a sample or the floor is empty (no replicas, or no run ended normally).
 //
 // The floor compares halves of n/2 runs, the law all n of its runs against all n of the
@@ -26,12 +31,13 @@ inline constexpr double kSignificance = 0.01;
 /// How many times the floor's distance a law's distance must exceed to count.
 inline constexpr double kFloorFactor = 2.0;
 
-enum class Verdict { changes, within_chaos, unclear, not_available };
+enum class Verdict { changes, within_chaos, unclear, negligible, not_available };
 
-/// "changes", "within chaos", "unclear", "n/a".
+/// "changes", "within chaos", "unclear", "negligible", "n/a".
 [[nodiscard]] std::string_view to_string(Verdict v);
 
-/// The rule of the header comment for a p-value, a distance and the floor's distance.
-[[nodiscard]] Verdict judge(double p_value, double distance, double floor_distance);
+/// The rule of the header comment for a p-value, a distance, the floor's distance and the
+/// feature's resolution (>= 0, in the distance's unit).
+[[nodiscard]] Verdict judge(double p_value, double distance, double floor_distance, double resolution = 0.0);
 
 }  // namespace frictionlab::dynamics::ensemble

@@ -146,11 +146,14 @@ void features_section(std::ostringstream& s, const std::vector<std::string>& law
        "Kolmogorov–Smirnov (D, asymptotic p with Stephens' effective size). *Floor*: the same distances between "
        "the reference's even- and odd-numbered replicas. A law **changes** the feature when p < "
     << support::significant(kSignificance, 2) << " and W1 > " << support::significant(kFloorFactor, 2)
-    << " × floor W1; *within chaos* when neither holds; *unclear* when one does (docs/ensembles.md).\n\n";
+    << " × floor W1; *within chaos* when neither holds; *unclear* when one does; *negligible* when W1 is at most "
+       "the feature's resolution, the smallest difference that means anything for it (given in each heading) "
+       "(docs/ensembles.md).\n\n";
   const auto comparisons = compare_features(rows, laws);
   std::map<std::string, std::map<std::string, Verdict>> verdicts;
   for (const auto& f : compared_features()) {
-    s << "### " << f.label << " (`" << f.name << "`" << (f.unit.empty() ? "" : ", " + f.unit) << ")\n\n"
+    s << "### " << f.label << " (`" << f.name << "`" << (f.unit.empty() ? "" : ", " + f.unit) << "; resolution "
+      << support::significant(f.resolution, 2) << ")\n\n"
       << "| law | normal | with value | 5 % | 25 % | median | 75 % | 95 % | W1 | D | p | floor W1 | floor D | floor p | "
          "verdict |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
     for (const auto& c : comparisons) {

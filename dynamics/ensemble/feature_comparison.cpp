@@ -47,16 +47,21 @@ double ks_p(const std::vector<double>& a, const std::vector<double>& b) {
 
 bool ended_normally(const RunRecord& r) { return r.reason == "t_end" || r.reason == "rest" || r.reason == "rolling"; }
 
+// Resolutions: t_vertical is read on samples 0.01 s apart (the shipped studies' output_dt); a tilt
+// of 0.1 deg is below what the plateau's 5-s mean resolves; 0.1 s of time to rest is below the
+// rest event's settling window (~0.1 s); 1e-3 in gamma3 is the precision of "vertical" itself
+// (|gamma3| > 0.999); one lift-off; 1e-3 of the weight; 0.01 J of work (the egg's works are 2-250 J).
 const std::vector<FeatureDef>& compared_features() {
   static const std::vector<FeatureDef> features = {
-      {"t_vertical", "time to the vertical (|gamma3| > 0.999)", "s", [](const RunRecord& r) { return r.t_vertical; }},
-      {"plateau_tilt_deg", "tilt of the plateau", "deg", [](const RunRecord& r) { return r.plateau_tilt_deg; }},
-      {"t_rest", "time to rest or rolling", "s", [](const RunRecord& r) { return r.t_rest; }},
-      {"final_gamma3", "final gamma3 (mean of the last second)", "", [](const RunRecord& r) { return r.final_gamma3; }},
-      {"liftoffs", "lift-offs", "", [](const RunRecord& r) { return static_cast<double>(r.liftoffs); }},
-      {"min_n_over_mg", "min N/(m g)", "", [](const RunRecord& r) { return r.min_n_over_mg; }},
-      {"work_slide", "work against sliding", "J", [](const RunRecord& r) { return r.work_slide; }},
-      {"work_spin", "work against spinning", "J", [](const RunRecord& r) { return r.work_spin; }},
+      {"t_vertical", "time to the vertical (|gamma3| > 0.999)", "s", 0.01, [](const RunRecord& r) { return r.t_vertical; }},
+      {"plateau_tilt_deg", "tilt of the plateau", "deg", 0.1, [](const RunRecord& r) { return r.plateau_tilt_deg; }},
+      {"t_rest", "time to rest or rolling", "s", 0.1, [](const RunRecord& r) { return r.t_rest; }},
+      {"final_gamma3", "final gamma3 (mean of the last second)", "", 1e-3,
+       [](const RunRecord& r) { return r.final_gamma3; }},
+      {"liftoffs", "lift-offs", "", 1.0, [](const RunRecord& r) { return static_cast<double>(r.liftoffs); }},
+      {"min_n_over_mg", "min N/(m g)", "", 1e-3, [](const RunRecord& r) { return r.min_n_over_mg; }},
+      {"work_slide", "work against sliding", "J", 0.01, [](const RunRecord& r) { return r.work_slide; }},
+      {"work_spin", "work against spinning", "J", 0.01, [](const RunRecord& r) { return r.work_spin; }},
   };
   return features;
 }
@@ -88,7 +93,7 @@ std::vector<FeatureComparison> compare_features(const std::vector<RunRecord>& ro
         c.distances.w1 = wasserstein1(v, ref);
         c.distances.ks = ks_statistic(v, ref);
         c.distances.p = ks_p(v, ref);
-        c.distances.verdict = judge(c.distances.p, c.distances.w1, c.distances.floor_w1);
+        c.distances.verdict = judge(c.distances.p, c.distances.w1, c.distances.floor_w1, f.resolution);
       }
       out.push_back(std::move(c));
     }

@@ -24,6 +24,9 @@ struct FeatureDef {
   std::string name;    ///< the column
   std::string label;   ///< what it is, in words
   std::string unit;    ///< "s", "deg", "J", "" ...
+  /// The smallest difference (W1, in the unit) that means anything for the feature: below it a
+  /// difference is negligible (chaos_floor_rule.h). A choice, named with its reason in the .cpp.
+  double resolution = 0.0;
   std::function<double(const RunRecord&)> value;
 };
 

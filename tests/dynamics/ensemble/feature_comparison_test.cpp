@@ -54,6 +54,9 @@ TEST(EnsembleChaosFloorRule, TheRuleNeedsSignificanceAndTheFloorFactor) {
   EXPECT_EQ(judge(0.5, 3.0, 1.0), Verdict::unclear) << "above the floor but not significant";
   EXPECT_EQ(judge(0.01, 3.0, 1.0), Verdict::unclear) << "p must be below 1 %";
   EXPECT_EQ(judge(std::nan(""), 3.0, 1.0), Verdict::not_available);
+  EXPECT_EQ(judge(1e-9, 3e-8, 1e-11, 1e-3), Verdict::negligible) << "detectable, but below the feature's resolution";
+  EXPECT_EQ(judge(1e-9, 3.0, 1.0, 3.0), Verdict::negligible) << "at the resolution";
+  EXPECT_EQ(judge(1e-9, 3.0, 1.0, 2.9), Verdict::changes);
   EXPECT_EQ(to_string(Verdict::within_chaos), "within chaos");
 }
 
@@ -73,6 +76,9 @@ TEST(EnsembleFeatureComparison, AShiftedLawChangesTheMotionAndAnEqualOneStaysWit
   EXPECT_NEAR(shifted.distances.w1, 60.0, 1e-9) << "W1 is the shift";
   EXPECT_LT(shifted.distances.p, 1e-10);
   EXPECT_EQ(shifted.distances.verdict, Verdict::changes);
+  // A systematic shift below the feature's resolution (0.1 s for t_rest) is negligible.
+  const auto tiny = compare_features(study(0.05, "pole+"), {"exact", "same", "shifted"});
+  EXPECT_EQ(find(tiny, "t_rest", "shifted").distances.verdict, Verdict::negligible);
   // A feature no run has: n/a, not a verdict.
   EXPECT_EQ(find(c, "t_vertical", "shifted").distances.verdict, Verdict::not_available);
   EXPECT_EQ(find(c, "t_vertical", "shifted").summary.finite, 0);
