@@ -154,8 +154,10 @@ std::vector<DivergenceSummary> compare_divergence(const std::vector<RunRecord>& 
     std::vector<double> times;
     collect([&](const RunRecord& r) { return r.law == laws[i] && r.diverge_ref == laws.front(); }, s, times);
     // Runs compared over less time than the floor takes to part (a law stopped at its pole) say
-    // nothing about parting later: no test then.
-    if (!(s.median_horizon < floor.quantiles[2])) {
+    // nothing about parting later: no test then. A floor that never parts is compared over its
+    // horizon, of which a law's runs must cover half (runs of equal length end at chaotic times).
+    const double floor_time = floor.parted > 0 ? floor.quantiles[2] : 0.5 * floor.median_horizon;
+    if (!(s.median_horizon < floor_time)) {
       s.ks = ks_statistic(times, floor_times);
       s.p = ks_p(times, floor_times);
     }

@@ -88,6 +88,7 @@ struct DivergenceSummary {
   double median_horizon = kNaN;  ///< s: the median time the runs were compared over
   double ks = kNaN;              ///< against the floor, with unparted runs at +infinity; NaN when the
                                  ///< median horizon is shorter than the floor's median parting time
+                                 ///< (half its median horizon if the floor never parts)
   double p = kNaN;
 };
 [[nodiscard]] std::vector<DivergenceSummary> compare_divergence(const std::vector<RunRecord>& rows,

@@ -132,6 +132,13 @@ TEST(EnsembleFeatureComparison, RunsComparedOverLessTimeThanTheFloorTakesAreNotT
   const auto d = compare_divergence(rows, {"exact", "same", "shifted"});
   EXPECT_EQ(d[1].parted, 0);
   EXPECT_TRUE(std::isnan(d[1].p)) << "0.3 s of comparison cannot tell whether it parts at 20-30 s";
+  // A floor that never parts (a motion without chaos): the law is tested over the floor's horizon.
+  for (auto& r : rows)
+    if (r.law == "exact") r.t_diverge = std::nan("");
+  const auto calm = compare_divergence(rows, {"exact", "same", "shifted"});
+  EXPECT_EQ(calm[2].parted, 0);
+  EXPECT_TRUE(std::isnan(calm[1].p)) << "stopped at 0.3 s: still no test against a floor compared over 100-200 s";
+  EXPECT_LT(calm[0].p, 1e-10) << "parts at 20-30 s where the floor never does";
 }
 
 }  // namespace
