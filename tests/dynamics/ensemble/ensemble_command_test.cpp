@@ -181,6 +181,23 @@ values = [0.05, 2]
   fs::remove_all(dir);
 }
 
+TEST(EnsembleCommand, Hdf5TrajectoriesAreWrittenWhenAskedAndOnlyThen) {
+  const fs::path dir = fresh_dir("hdf5");
+  const auto r = run_frictionlab("ensemble " + kSmoke + " --out " + dir.string() + " --hdf5 --no-figures");
+#ifdef FRICTIONLAB_ENSEMBLE_HDF5
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_GT(fs::file_size(dir / "trajectories.h5"), 8u * 1000u) << "8 runs of about 11 rows each";
+#else
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("--hdf5 is not available"), std::string::npos) << r.err;
+#endif
+  const fs::path without = fresh_dir("no_hdf5");
+  ASSERT_EQ(run_frictionlab("ensemble " + kSmoke + " --out " + without.string() + " --no-figures").exit_code, 0);
+  EXPECT_FALSE(fs::exists(without / "trajectories.h5"));
+  fs::remove_all(dir);
+  fs::remove_all(without);
+}
+
 TEST(EnsembleCommand, BadStudiesAndOptionsAreOneLineAndWriteNothing) {
   const fs::path dir = fresh_dir("bad");
   const fs::path bad_key = write_study(dir, "bad_key.toml", "laws = [\"exact\"]\n[[vary]]\nkey = \"contact.kk\"\nvalues = [1]\n");
