@@ -30,15 +30,19 @@ for egg in printed homogeneous; do
 done
 
 echo "== throughput: 200 runs (scaling.toml)"
-run() {  # run LABEL COMMAND...: wall time of the whole job, runs/s, the stderr kept
+run() {  # run LABEL COMMAND...: wall time of the whole job, runs/s, CPU per run, the stderr kept
   local label=$1; shift
   local start end
   start=$(date +%s.%N)
-  "$@" > "$out/$label.out" 2> "$out/$label.err"
+  /usr/bin/time -f "%U %S" -o "$out/$label.cpu" "$@" > "$out/$label.out" 2> "$out/$label.err"
   end=$(date +%s.%N)
-  local wall
+  local wall cpu
   wall=$(echo "$end - $start" | bc -l)
-  printf '%-16s %6.1f s  %5.2f runs/s   %s\n' "$label" "$wall" "$(echo "200 / $wall" | bc -l)" \
+  cpu=$(awk '{ print $1 + $2 }' "$out/$label.cpu")
+  # CPU per run (user + system of every process of the job, ranks included): what the job costs
+  # whatever else the machine runs; runs/s depends on the cores the job actually got.
+  printf '%-16s %6.1f s  %5.2f runs/s  %6.1f s CPU (%.3f s a run)  load %s   %s\n' "$label" "$wall" \
+         "$(echo "200 / $wall" | bc -l)" "$cpu" "$(echo "$cpu / 200" | bc -l)" "$(cut -d' ' -f1 /proc/loadavg)" \
          "$(grep -h 'coordination' "$out/$label.err" | sed 's/^ensemble: //')"
 }
 run threads-1 "$exe" ensemble "$here/scaling.toml" --out "$out/threads-1" --threads 1 --no-figures
