@@ -41,9 +41,22 @@ int write_all(int fd, const char* data, std::size_t size, std::size_t* done = nu
 }  // namespace
 
 RecordFile::RecordFile(const std::filesystem::path& path, std::size_t buffer_bytes)
+    : RecordFile(path, OpenMode::truncate, buffer_bytes) {}
+
+RecordFile::RecordFile(const std::filesystem::path& path, OpenMode mode, std::size_t buffer_bytes)
     : path_(path), capacity_(buffer_bytes > 0 ? buffer_bytes : kDefaultBuffer) {
-  fd_ = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+  const int how = mode == OpenMode::append ? O_APPEND : O_TRUNC;
+  fd_ = ::open(path.c_str(), O_WRONLY | O_CREAT | how | O_CLOEXEC, 0666);
   if (fd_ < 0) throw OutputError("cannot write '" + path.string() + "': " + reason(errno));
+  if (mode == OpenMode::append) {
+    const off_t end = ::lseek(fd_, 0, SEEK_END);
+    if (end < 0) {
+      const int error_number = errno;
+      ::close(std::exchange(fd_, -1));
+      throw OutputError("cannot append to '" + path.string() + "': " + reason(error_number));
+    }
+    base_ = static_cast<std::uint64_t>(end);
+  }
   buffer_.reserve(capacity_);
 }
 
@@ -51,7 +64,7 @@ RecordFile::~RecordFile() {
   if (fd_ < 0) return;
   if (failure_.empty() && !buffer_.empty()) {
     // Best effort: keep the buffered whole records, or none of them.
-    if (write_all(fd_, buffer_.data(), buffer_.size()) != 0) (void)::ftruncate(fd_, static_cast<off_t>(written_));
+    if (write_all(fd_, buffer_.data(), buffer_.size()) != 0) (void)::ftruncate(fd_, static_cast<off_t>(base_ + written_));
   }
   ::close(fd_);
 }
@@ -82,7 +95,7 @@ void RecordFile::flush() {
     // Part of the buffer may have reached the file: keep the whole records among it, cut the rest.
     const auto whole = std::upper_bound(record_ends_.begin(), record_ends_.end(), done);
     written_ += whole == record_ends_.begin() ? 0 : *(whole - 1);
-    (void)::ftruncate(fd_, static_cast<off_t>(written_));
+    (void)::ftruncate(fd_, static_cast<off_t>(base_ + written_));
     buffer_.clear();
     record_ends_.clear();
     fail("writing", error_number);

@@ -31,8 +31,14 @@ class OutputError : public std::runtime_error {
 /// thread-safe.
 class RecordFile {
  public:
+  /// truncate: the file starts empty; append: records go after what it holds (a job resumed).
+  enum class OpenMode { truncate, append };
+
   /// Creates or truncates `path`. Throws OutputError if it cannot be opened for writing.
   explicit RecordFile(const std::filesystem::path& path, std::size_t buffer_bytes = kDefaultBuffer);
+  /// Creates `path` or opens it in `mode`; a failed write is rolled back to the last whole record
+  /// this object wrote, never into what the file held before.
+  RecordFile(const std::filesystem::path& path, OpenMode mode, std::size_t buffer_bytes = kDefaultBuffer);
   /// Closes the file; errors are lost (call close() to see them).
   ~RecordFile();
   RecordFile(const RecordFile&) = delete;
@@ -45,7 +51,7 @@ class RecordFile {
   /// Flushes and closes, checking both. Throws OutputError; later calls do nothing.
   void close();
 
-  /// Bytes of whole records that reached the file.
+  /// Bytes of whole records that reached the file through this object.
   [[nodiscard]] std::uint64_t bytes_written() const { return written_; }
   [[nodiscard]] bool failed() const { return !failure_.empty(); }
   [[nodiscard]] const std::filesystem::path& path() const { return path_; }
@@ -61,6 +67,7 @@ class RecordFile {
   std::string buffer_;
   std::vector<std::size_t> record_ends_;  // end of each record in buffer_
   std::size_t capacity_;
+  std::uint64_t base_ = 0;     // the file's size when opened (append mode)
   std::uint64_t written_ = 0;
   std::string failure_;
 };

@@ -130,6 +130,56 @@ TEST(SupportCheckedOutput, AFileSizeLimitLeavesOnlyWholeRecords) {
   fs::remove_all(dir);
 }
 
+TEST(SupportCheckedOutput, AppendModeKeepsWhatTheFileHeld) {
+  const fs::path dir = fresh_dir("append");
+  {
+    RecordFile f(dir / "r.csv");
+    f.append(record(0));
+  }
+  {
+    RecordFile f(dir / "r.csv", RecordFile::OpenMode::append);
+    f.append(record(1));
+    f.close();
+    EXPECT_EQ(f.bytes_written(), record(1).size()) << "counts what this object wrote";
+  }
+  EXPECT_EQ(slurp(dir / "r.csv"), record(0) + record(1));
+  {
+    RecordFile f(dir / "new.csv", RecordFile::OpenMode::append);  // creates a missing file
+    f.append(record(2));
+  }
+  EXPECT_EQ(slurp(dir / "new.csv"), record(2));
+  fs::remove_all(dir);
+}
+
+TEST(SupportCheckedOutput, AppendModeUnderAFileSizeLimitKeepsTheOldRecordsAndWholeNewOnes) {
+  const fs::path dir = fresh_dir("append_limit");
+  const fs::path file = dir / "r.csv";
+  std::string old;
+  for (int i = 0; i < 10; ++i) old += record(i);  // 300 bytes before the limit bites
+  {
+    std::ofstream(file, std::ios::binary) << old;
+  }
+  constexpr rlim_t kLimit = 1000;
+  const int code = in_child_with_file_limit(kLimit, [&] {
+    RecordFile f(file, RecordFile::OpenMode::append, 4096);
+    try {
+      for (int i = 10; i < 1000; ++i) f.append(record(i));
+      f.close();
+    } catch (const OutputError&) {
+      return 0;
+    }
+    return 1;
+  });
+  ASSERT_EQ(code, 0) << "the limit did not stop the writes";
+  const std::string text = slurp(file);
+  EXPECT_LE(text.size(), kLimit);
+  ASSERT_EQ(text.size() % record(0).size(), 0u) << "a record was cut, or the old ones: " << text.size() << " bytes";
+  EXPECT_GT(text.size() + record(0).size(), kLimit) << "whole records that fitted were dropped";
+  for (std::size_t i = 0; i < text.size() / record(0).size(); ++i)
+    EXPECT_EQ(text.substr(i * record(0).size(), record(0).size()), record(static_cast<int>(i)));
+  fs::remove_all(dir);
+}
+
 TEST(SupportCheckedOutput, AtomicWriteReplacesTheFile) {
   const fs::path dir = fresh_dir("atomic");
   write_file_atomically(dir / "summary.json", "old\n");

@@ -1,0 +1,109 @@
+// `frictionlab ensemble STUDY.toml --out DIR [--threads N] [--resume] [--hdf5] [--no-figures]`:
+// every (start x replica x law) run of a study on all cores, or over MPI ranks under mpirun, into
+// DIR/runs.csv (a row per run as it finishes), then DIR/report.md with the statistics against the
+// chaos floor and the maps (docs/ensembles.md). Progress on stderr, one summary line on stdout.
+// Exit code 0 when every run of the study is done (runs that stop early or fail are results, in
+// runs.csv with their reason); 3 when runs remain (interrupted: --resume continues) or the output
+// failed; 1 for bad input (one line, nothing run).
+
+#include <unistd.h>
+
+#include <cstdio>
+#include <memory>
+#include <string>
+
+#include "dynamics/cli/commands.h"
+#include "dynamics/ensemble/ensemble_job.h"
+#include "friction/support/errors.h"
+#include "friction/support/interrupt_guard.h"
+#include "friction/support/number_format.h"
+
+namespace frictionlab::cli {
+namespace {
+
+constexpr int kExitIncomplete = 3;
+
+struct EnsembleCliOptions {
+  std::string study;
+  std::string out;
+  int threads = 0;
+  bool resume = false;
+  bool hdf5 = false;
+  bool no_figures = false;
+};
+
+void run(const EnsembleCliOptions& opt) {
+  namespace ens = dynamics::ensemble;
+  if (opt.threads < 0)
+    throw support::invalid_value("--threads", static_cast<long long>(opt.threads), "it must be >= 0 (0: one per core)");
+  ens::JobOptions job;
+  job.study = opt.study;
+  job.out = opt.out;
+  job.threads = opt.threads;
+  job.resume = opt.resume;
+  job.trajectories = opt.hdf5;
+  job.figures = !opt.no_figures;
+  job.log = stderr;
+  job.live = isatty(STDERR_FILENO) != 0;
+  job.command = "frictionlab ensemble " + opt.study + " --out " + opt.out;
+  if (opt.threads != 0) job.command += " --threads " + std::to_string(opt.threads);
+  if (opt.hdf5) job.command += " --hdf5";
+
+  ens::JobOutcome outcome;
+  {
+    // Ctrl-C, kill or a lost terminal: the runs in flight stop between steps (not recorded), the
+    // finished ones are in runs.csv; --resume continues.
+    const support::InterruptGuard interrupts;
+    job.cancel = &interrupts.flag();
+    outcome = ens::run_ensemble_job(job);
+  }
+  if (outcome.quiet_failure) throw CLI::RuntimeError(1);
+  if (!outcome.writer) {
+    if (outcome.interrupted) throw CLI::RuntimeError(kExitIncomplete);
+    return;
+  }
+  const ens::SessionSummary& s = outcome.summary;
+  std::printf("ensemble: %ld of %ld runs done (%ld this session: %ld failed, %ld stopped early) in %s s on %d rank%s x %d "
+              "thread%s; wrote %s%s\n",
+              s.done_before + s.done_now, s.total, s.done_now, s.failed_now, s.early_now,
+              support::fixed(outcome.wall_time, 1).c_str(), outcome.ranks, outcome.ranks == 1 ? "" : "s", outcome.threads,
+              outcome.threads == 1 ? "" : "s", (std::filesystem::path(opt.out) / "runs.csv").c_str(),
+              outcome.report.empty() ? "" : (", " + outcome.report.string()).c_str());
+  if (outcome.ranks > 1) {
+    const ens::CoordinationCost& c = outcome.coordination;
+    std::fprintf(stderr,
+                 "ensemble: coordination: rank 0 spent %s s on the %ld runs the other ranks sent (%s ms a run); "
+                 "they waited %s s in all for %ld tasks\n",
+                 support::fixed(c.busy, 4).c_str(), c.runs_received,
+                 support::fixed(c.runs_received > 0 ? 1e3 * c.busy / static_cast<double>(c.runs_received) : 0.0, 3).c_str(),
+                 support::fixed(c.worker_wait, 4).c_str(), c.tasks_sent);
+  }
+  for (const auto& e : outcome.figure_errors) std::fprintf(stderr, "frictionlab: ensemble: %s\n", e.c_str());
+  if (!s.output_error.empty()) {
+    std::fprintf(stderr, "frictionlab: ensemble: the output failed: %s\n", support::one_line(s.output_error).c_str());
+    throw CLI::RuntimeError(kExitIncomplete);
+  }
+  if (!s.complete) {
+    std::fprintf(stderr, "frictionlab: ensemble: %s; %ld runs remain: add --resume to continue\n",
+                 outcome.interrupted ? "interrupted" : "incomplete", s.remaining());
+    throw CLI::RuntimeError(kExitIncomplete);
+  }
+}
+
+}  // namespace
+
+void register_ensemble_command(CLI::App& app) {
+  auto opt = std::make_shared<EnsembleCliOptions>();
+  auto* cmd = app.add_subcommand(
+      "ensemble", "Run a study: every (start x replica x law) run on all cores, or over MPI ranks under mpirun; "
+                  "runs.csv and a report against the chaos floor (docs/ensembles.md)");
+  cmd->add_option("study", opt->study, "The study file (TOML)")->required();
+  cmd->add_option("--out", opt->out, "Output folder (created if needed)")->required();
+  cmd->add_option("--threads", opt->threads, "Worker threads (default 0: one per core; under MPI, of rank 0: 1)");
+  cmd->add_flag("--resume", opt->resume, "Continue the ensemble in --out: redo only the runs not in its runs.csv");
+  cmd->add_flag("--hdf5", opt->hdf5, "Also write decimated trajectories to DIR/trajectories.h5");
+  cmd->add_flag("--no-figures", opt->no_figures, "Write the maps' data and gnuplot scripts but do not run gnuplot");
+  cmd->callback([opt] { run(*opt); });
+}
+
+}  // namespace frictionlab::cli

@@ -1,0 +1,148 @@
+#include "dynamics/ensemble/ensemble_plan.h"
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+#include "dynamics/body_scales.h"
+#include "dynamics/ensemble/design.h"
+#include "dynamics/ensemble/random_stream.h"
+#include "dynamics/ensemble/replica.h"
+#include "friction/registry.h"
+#include "friction/support/errors.h"
+
+namespace frictionlab::dynamics::ensemble {
+namespace {
+
+std::string read_text(const std::filesystem::path& file) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(file, ec))
+    throw support::invalid_value("scenario", file.string(), "it is a folder, not a scenario file");
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw support::invalid_value("scenario", file.string(), std::string("cannot read it: ") + std::strerror(errno));
+  std::stringstream buf;
+  buf << in.rdbuf();
+  return buf.str();
+}
+
+// The design's starts, each a value per varied key.
+std::vector<std::vector<double>> draw_starts(const Study& s) {
+  const int dims = static_cast<int>(s.vary.size());
+  if (s.design == DesignKind::grid) {
+    std::vector<std::vector<double>> axes;
+    for (const auto& a : s.vary) axes.push_back(a.grid());
+    return grid_product(axes);
+  }
+  // The design's own stream: derive_seed(seed, 0, 0); replicas use (seed, start, r >= 1).
+  const std::uint64_t seed = derive_seed(s.seed, 0, 0);
+  std::vector<UnitPoint> unit = s.design == DesignKind::random ? random_points(dims, s.points, seed)
+                                : s.design == DesignKind::sobol ? sobol_points(dims, s.points)
+                                                                : latin_hypercube(dims, s.points, seed);
+  for (auto& p : unit)
+    for (int d = 0; d < dims; ++d) p[static_cast<std::size_t>(d)] = s.vary[static_cast<std::size_t>(d)].at(p[static_cast<std::size_t>(d)]);
+  return unit;
+}
+
+std::string hex16(std::uint64_t h) {
+  char buf[17];
+  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
+  return buf;
+}
+
+}  // namespace
+
+std::uint64_t fnv1a64(std::string_view text, std::uint64_t h) {
+  for (const char c : text) {
+    h ^= static_cast<unsigned char>(c);
+    h *= 0x100000001b3ULL;
+  }
+  return h;
+}
+
+EnsemblePlan EnsemblePlan::make(const Study& study) {
+  EnsemblePlan p;
+  p.study_ = std::make_shared<const Study>(study);
+  const std::string where = study.file.string() + ": ";
+  try {
+    for (std::size_t i = 0; i < study.set.size(); ++i)
+      if (study.set[i].substr(0, study.set[i].find('=')) == "contact.law")
+        throw support::invalid_value("set[" + std::to_string(i) + "]", std::string_view(study.set[i]),
+                                     "the laws are the study's `laws`");
+    const std::string text = read_text(study.scenario);
+    try {
+      p.document_ = std::make_shared<const ScenarioDocument>(ScenarioDocument::parse(text, study.scenario.string()));
+      p.base_ = std::make_shared<const Scenario>(p.document_->resolve(study.set));
+    } catch (const std::invalid_argument& e) {
+      throw support::invalid_value("scenario (with the study's set)", study.scenario.string(), e.what());
+    }
+    p.hash_ = hex16(fnv1a64(p.base_->resolved_toml, fnv1a64(std::string_view("\0", 1), fnv1a64(study.canonical))));
+    p.rate_scale_ = body_scales(p.base_->body, p.base_->contact).rate;
+
+    for (std::size_t i = 0; i < study.laws.size(); ++i) {
+      try {
+        (void)friction::make_law(study.laws[i]);
+      } catch (const std::invalid_argument& e) {
+        throw support::invalid_value("laws[" + std::to_string(i) + "]", std::string_view(study.laws[i]), e.what());
+      }
+    }
+    for (std::size_t i = 0; i < study.vary.size(); ++i)
+      p.keys_.push_back(VariedKey::parse(study.vary[i].key, "vary[" + std::to_string(i) + "].key"));
+    // Each key at its extremes, the others at their minimum: a key the scenario does not know,
+    // or a range it rejects, is an error now rather than a thousand failed runs.
+    std::vector<double> lows;
+    for (const auto& a : study.vary) lows.push_back(a.min);
+    for (std::size_t i = 0; i < study.vary.size(); ++i) {
+      for (const double x : {study.vary[i].min, study.vary[i].max}) {
+        std::vector<double> v = lows;
+        v[i] = x;
+        try {
+          const StartState s = apply_start(p.base_->initial, p.keys_, v);
+          std::vector<std::string> o = study.set;
+          for (auto& e : start_overrides(s)) o.push_back(std::move(e));
+          (void)p.document_->resolve(o);
+        } catch (const std::invalid_argument& e) {
+          throw support::invalid_value("vary[" + std::to_string(i) + "]", std::string_view(study.vary[i].key),
+                                       std::string("at ") + (x == study.vary[i].min ? "min" : "max") + ": " + e.what());
+        }
+      }
+    }
+    p.starts_ = draw_starts(study);
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(where + e.what());
+  }
+  return p;
+}
+
+RunId EnsemblePlan::run_id(long index) const {
+  RunId id;
+  id.law = static_cast<int>(index % laws());
+  const long sr = index / laws();
+  id.replica = sr % replicas();
+  id.start = sr / replicas();
+  return id;
+}
+
+std::vector<std::string> EnsemblePlan::overrides(const RunId& id) const {
+  StartState s = apply_start(base_->initial, keys_, start_values(id.start));
+  s = perturb_replica(std::move(s), study_->replica_size, rate_scale_, study_->seed, id.start, id.replica);
+  std::vector<std::string> o = study_->set;
+  for (auto& e : start_overrides(s)) o.push_back(std::move(e));
+  o.push_back("contact.law=" + study_->laws.at(static_cast<std::size_t>(id.law)));
+  return o;
+}
+
+Scenario EnsemblePlan::scenario(const RunId& id) const { return document_->resolve(overrides(id)); }
+
+Task EnsemblePlan::task(long index) const {
+  Task t;
+  t.index = index;
+  t.start = index / pairs_per_start();
+  t.first_replica = 2 * (index % pairs_per_start());
+  t.replica_count = std::min(2L, replicas() - t.first_replica);
+  return t;
+}
+
+}  // namespace frictionlab::dynamics::ensemble

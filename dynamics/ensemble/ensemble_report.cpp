@@ -1,0 +1,330 @@
+#include "dynamics/ensemble/ensemble_report.h"
+
+#include <sys/utsname.h>
+
+#include <chrono>
+#include <cmath>
+#include <ctime>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+#include <stdexcept>
+#include <thread>
+
+#include "dynamics/ensemble/chaos_floor_rule.h"
+#include "dynamics/ensemble/cluster_prediction.h"
+#include "dynamics/ensemble/progress_meter.h"
+#include "dynamics/ensemble/feature_comparison.h"
+#include "dynamics/ensemble/outcome_map.h"
+#include "dynamics/ensemble/sample_statistics.h"
+#include "dynamics/paper/experiment_report.h"
+#include "friction/support/checked_output.h"
+#include "friction/support/number_format.h"
+
+namespace frictionlab::dynamics::ensemble {
+namespace {
+
+// Coordination per task assumed in the predictions: rank 0 handles a request and a task's rows in
+// well under a millisecond (docs/ensembles.md §6); 1 ms is a generous bound.
+constexpr double kPredictionTaskOverhead = 1e-3;
+
+std::string n3(double x) { return std::isnan(x) ? "–" : support::significant(x, 3); }
+std::string n4(double x) { return std::isnan(x) ? "–" : support::significant(x, 4); }
+std::string p_text(double p) {
+  if (std::isnan(p)) return "–";
+  if (p < 1e-4) return "<1e-4";
+  return support::significant(p, 2);
+}
+std::string share(long k, long n) { return std::to_string(k) + "/" + std::to_string(n); }
+std::string verdict_text(Verdict v) {
+  return v == Verdict::changes ? "**changes**" : std::string(to_string(v));
+}
+
+std::string utc_now() {
+  const std::time_t t = std::time(nullptr);
+  std::tm tm{};
+  gmtime_r(&t, &tm);
+  char buf[32];
+  std::strftime(buf, sizeof buf, "%Y-%m-%d %H:%M UTC", &tm);
+  return buf;
+}
+
+std::vector<const RunRecord*> of_law(const std::vector<RunRecord>& rows, const std::string& law) {
+  std::vector<const RunRecord*> out;
+  for (const auto& r : rows)
+    if (r.law == law) out.push_back(&r);
+  return out;
+}
+
+void study_section(std::ostringstream& s, const EnsemblePlan& plan, const std::vector<RunRecord>& rows,
+                   const std::string& command, const std::string& machine) {
+  const Study& st = plan.study();
+  s << "# Ensemble `" << st.name << "`\n\n";
+  if (!st.description.empty()) s << st.description << ".\n\n";
+  s << "Study `" << st.file.filename().string() << "` (hash `" << plan.hash() << "`), base scenario `"
+    << st.scenario.filename().string() << "`";
+  if (!st.set.empty()) {
+    s << " with";
+    for (const auto& o : st.set) s << " `" << o << "`";
+  }
+  s << ". Laws, the reference first: ";
+  for (std::size_t i = 0; i < st.laws.size(); ++i) s << (i ? ", " : "") << "`" << st.laws[i] << "`";
+  s << ". " << plan.starts() << " start" << (plan.starts() == 1 ? "" : "s");
+  if (!st.vary.empty()) {
+    s << " (" << to_string(st.design) << (st.design == DesignKind::grid ? "" : ", " + std::to_string(st.points) + " points")
+      << " over";
+    for (std::size_t i = 0; i < st.vary.size(); ++i) {
+      const auto& a = st.vary[i];
+      s << (i ? "," : "") << " `" << a.key << "` in [" << n4(a.min) << ", " << n4(a.max) << "]"
+        << (a.scale == AxisScale::log ? " (log)" : "");
+      if (st.design == DesignKind::grid) s << " (" << a.grid().size() << " values)";
+    }
+    s << ")";
+  }
+  s << " × " << plan.replicas() << " replica" << (plan.replicas() == 1 ? "" : "s");
+  if (plan.replicas() > 1) s << " (perturbation " << n3(st.replica_size) << ")";
+  s << " × " << plan.laws() << " law" << (plan.laws() == 1 ? "" : "s") << " = **" << plan.runs() << " runs** ("
+    << rows.size() << " in runs.csv).\n\n";
+  double cpu = 0.0;
+  for (const auto& r : rows) cpu += std::isnan(r.wall_time) ? 0.0 : r.wall_time;
+  s << "Made by `" << command << "`; report written " << utc_now() << " on " << machine << ". The runs took "
+    << support::fixed(cpu, 0) << " s of one core in all (" << n3(static_cast<double>(rows.size()) / cpu)
+    << " runs per second per core).\n\n";
+}
+
+void runs_section(std::ostringstream& s, const std::vector<std::string>& laws, const std::vector<RunRecord>& rows) {
+  std::set<std::string> reasons;
+  for (const auto& r : rows) reasons.insert(r.reason);
+  s << "## How the runs ended\n\n| law | runs |";
+  for (const auto& reason : reasons) s << " " << reason << " |";
+  s << "\n|---|---|";
+  for (std::size_t i = 0; i < reasons.size(); ++i) s << "---|";
+  s << "\n";
+  for (const auto& law : laws) {
+    const auto runs = of_law(rows, law);
+    std::map<std::string, long> n;
+    for (const RunRecord* r : runs) ++n[r->reason];
+    s << "| " << law << " | " << runs.size() << " |";
+    for (const auto& reason : reasons) s << " " << n[reason] << " |";
+    s << "\n";
+  }
+  s << "\n`rest`, `rolling`, `t_end`: the run ended as the model intends; `law-pole`: the law's denominator "
+       "passed through 0 (the printed Padé law); `max-steps`: the integrator crawled (run.max_steps); "
+       "`stagnation`: a bounce reached U = Ω = 0 while unsettled; `failed`: the run could not start "
+       "(docs/dynamics.md §5).\n\n";
+
+  const auto classes = compare_classes(rows, laws);
+  std::set<std::string> names;
+  for (const auto& c : classes)
+    for (const auto& [k, v] : c.counts) names.insert(k);
+  s << "## Where the runs end: outcome classes\n\n"
+       "`pole+` / `pole-`: ended within 8.1° of the vertical with γ3 → +1 / −1 (the pole at z_lo / z_hi touches); "
+       "`tilted`: ended elsewhere; `stopped`: stopped early (law-pole, max-steps, stagnation, ...). Total variation "
+       "(TV) and chi-square p against the reference; the floor: the same between the reference's even and odd "
+       "replicas.\n\n| law |";
+  for (const auto& k : names) s << " " << k << " |";
+  s << " TV | p | floor TV | floor p | verdict |\n|---|";
+  for (std::size_t i = 0; i < names.size(); ++i) s << "---|";
+  s << "---|---|---|---|---|\n";
+  for (const auto& c : classes) {
+    s << "| " << c.law << " |";
+    for (const auto& k : names) {
+      const auto it = c.counts.find(k);
+      s << " " << (it == c.counts.end() ? 0 : it->second) << " |";
+    }
+    s << " " << n3(c.tv) << " | " << p_text(c.p) << " | " << n3(c.floor_tv) << " | " << p_text(c.floor_p) << " | "
+      << (c.law == laws.front() ? "reference" : verdict_text(c.verdict)) << " |\n";
+  }
+  s << "\n";
+}
+
+void features_section(std::ostringstream& s, const std::vector<std::string>& laws, const std::vector<RunRecord>& rows) {
+  s << "## Does the law change the motion? Features against the chaos floor\n\n"
+    << "Per feature, over the runs that ended normally: quantiles (5, 25, 50, 75, 95 %), and the law's "
+       "distance to the reference's distribution: Wasserstein-1 (W1, in the feature's unit) and "
+       "Kolmogorov–Smirnov (D, asymptotic p with Stephens' effective size). *Floor*: the same distances between "
+       "the reference's even- and odd-numbered replicas. A law **changes** the feature when p < "
+    << support::significant(kSignificance, 2) << " and W1 > " << support::significant(kFloorFactor, 2)
+    << " × floor W1; *within chaos* when neither holds; *unclear* when one does; *negligible* when W1 is at most "
+       "the feature's resolution, the smallest difference that means anything for it (given in each heading) "
+       "(docs/ensembles.md).\n\n";
+  const auto comparisons = compare_features(rows, laws);
+  std::map<std::string, std::map<std::string, Verdict>> verdicts;
+  for (const auto& f : compared_features()) {
+    s << "### " << f.label << " (`" << f.name << "`" << (f.unit.empty() ? "" : ", " + f.unit) << "; resolution "
+      << support::significant(f.resolution, 2) << ")\n\n"
+      << "| law | normal | with value | 5 % | 25 % | median | 75 % | 95 % | W1 | D | p | floor W1 | floor D | floor p | "
+         "verdict |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+    for (const auto& c : comparisons) {
+      if (c.feature != f.name) continue;
+      const auto& q = c.summary.quantiles;
+      const auto& d = c.distances;
+      s << "| " << c.law << " | " << share(c.summary.normal, c.summary.runs) << " | " << c.summary.finite;
+      for (const double x : q) s << " | " << n4(x);
+      s << " | " << n3(d.w1) << " | " << n3(d.ks) << " | " << p_text(d.p) << " | " << n3(d.floor_w1) << " | "
+        << n3(d.floor_ks) << " | " << p_text(d.floor_p) << " | "
+        << (c.law == laws.front() ? "reference" : verdict_text(d.verdict)) << " |\n";
+      verdicts[f.name][c.law] = d.verdict;
+    }
+    s << "\n";
+  }
+  if (laws.size() > 1) {
+    s << "### Verdicts at a glance\n\n| feature |";
+    for (std::size_t i = 1; i < laws.size(); ++i) s << " " << laws[i] << " |";
+    s << "\n|---|";
+    for (std::size_t i = 1; i < laws.size(); ++i) s << "---|";
+    s << "\n";
+    for (const auto& c : compare_classes(rows, laws))
+      if (c.law != laws.front()) verdicts["final_class"][c.law] = c.verdict;
+    for (const auto& name : {std::string("final_class")}) {
+      s << "| outcome class |";
+      for (std::size_t i = 1; i < laws.size(); ++i) s << " " << verdict_text(verdicts[name][laws[i]]) << " |";
+      s << "\n";
+    }
+    for (const auto& f : compared_features()) {
+      s << "| " << f.name << " |";
+      for (std::size_t i = 1; i < laws.size(); ++i) s << " " << verdict_text(verdicts[f.name][laws[i]]) << " |";
+      s << "\n";
+    }
+    s << "\n";
+  }
+}
+
+void divergence_section(std::ostringstream& s, const std::vector<std::string>& laws, const std::vector<RunRecord>& rows,
+                        const std::vector<std::string>& figures) {
+  s << "## Divergence times against the floor\n\n"
+    << "The first time γ3 of a law's run differs from the reference's on the same replica by more than "
+    << support::significant(paper::kDivergenceThreshold, 2)
+    << " (compared up to the end of the shorter run); the floor: the reference on replica 2p + 1 against 2p. "
+       "Quantiles over the runs that parted; KS and p against the floor's times, unparted runs counted as never.\n\n"
+       "| | compared | parted | 5 % | 25 % | median | 75 % | 95 % | median horizon (s) | D vs floor | p |\n"
+       "|---|---|---|---|---|---|---|---|---|---|---|\n";
+  for (const auto& d : compare_divergence(rows, laws)) {
+    s << "| " << (d.law == "floor" ? "floor (" + laws.front() + " vs its other replica)" : d.law) << " | " << d.compared
+      << " | " << d.parted;
+    for (const double x : d.quantiles) s << " | " << n4(x);
+    s << " | " << n4(d.median_horizon) << " | " << n3(d.ks) << " | " << p_text(d.p) << " |\n";
+  }
+  s << "\n";
+  for (const auto& f : figures)
+    if (f == "figures/divergence.png") s << "![divergence times](" << f << ")\n\n";
+}
+
+void map_section(std::ostringstream& s, const OutcomeMap& m, const std::vector<std::string>& figures) {
+  s << "## Maps over `" << m.axes.x_key << "` × `" << m.axes.y_key << "`\n\n"
+    << "Per cell (one start, its replicas) and law but the reference: *chaotic* where the reference's own "
+       "replicas end in different classes, *changed* where more than half of the law's replicas end elsewhere than "
+       "the reference's unanimous class, *mixed* where some do, *same* where none does.\n\n"
+       "| law | same | mixed | changed | chaotic | cells |\n|---|---|---|---|---|---|\n";
+  for (std::size_t l = 1; l < m.laws.size(); ++l) {
+    const auto n = m.count(l);
+    s << "| " << m.laws[l].law << " | " << n[0] << " | " << n[1] << " | **" << n[2] << "** | " << n[3] << " | "
+      << m.cells() << " |\n";
+  }
+  s << "\n";
+  for (const auto& f : figures)
+    if (f.rfind("figures/map-", 0) == 0) s << "![" << f.substr(8, f.size() - 12) << "](" << f << ")\n\n";
+}
+
+void cost_section(std::ostringstream& s, const std::vector<std::string>& laws, const std::vector<RunRecord>& rows) {
+  s << "## Cost\n\nWall time of each run on one core (scenario, integration, features; no trajectory written), "
+       "RHS calls of the integrator and of the samples.\n\n"
+       "| law | runs | median wall (s) | mean wall (s) | max wall (s) | total (s) | median RHS calls | ns per RHS call |\n"
+       "|---|---|---|---|---|---|---|---|\n";
+  for (const auto& law : laws) {
+    std::vector<double> wall;
+    std::vector<double> calls;
+    double total = 0.0;
+    double total_calls = 0.0;
+    for (const RunRecord* r : of_law(rows, law)) {
+      if (std::isnan(r->wall_time)) continue;
+      wall.push_back(r->wall_time);
+      calls.push_back(static_cast<double>(r->rhs_calls));
+      total += r->wall_time;
+      total_calls += static_cast<double>(r->rhs_calls);
+    }
+    s << "| " << law << " | " << wall.size() << " | " << n3(quantile(wall, 0.5)) << " | "
+      << n3(wall.empty() ? kNaN : total / static_cast<double>(wall.size())) << " | " << n3(quantile(wall, 1.0)) << " | "
+      << support::fixed(total, 1) << " | " << n3(quantile(calls, 0.5)) << " | "
+      << (total_calls > 0 ? support::fixed(1e9 * total / total_calls, 0) : "–") << " |\n";
+  }
+  const std::vector<double> tasks = task_costs(rows);
+  s << "\n**Predicted wall time on P cores** (dynamics/ensemble/cluster_prediction.h): the " << tasks.size()
+    << " tasks (a start, a pair of replicas, every law) handed out in plan order to the first free core, each "
+       "costing its runs' wall times above plus "
+    << support::significant(1e3 * kPredictionTaskOverhead, 2)
+    << " ms of coordination; one worker per core as fast as this one; start-up and I/O not counted.\n\n"
+       "| cores | 1 | 2 | 64 | 1024 |\n|---|---|---|---|---|\n| wall time |";
+  for (const long p : {1L, 2L, 64L, 1024L})
+    s << " " << ProgressMeter::duration(predicted_wall_time(tasks, p, kPredictionTaskOverhead)) << " |";
+  s << "\n\n";
+}
+
+}  // namespace
+
+std::vector<RunRecord> read_runs(const std::filesystem::path& runs_csv, std::size_t key_count) {
+  std::ifstream in(runs_csv, std::ios::binary);
+  if (!in) throw std::invalid_argument("cannot read '" + runs_csv.string() + "'");
+  std::string line;
+  std::getline(in, line);  // header
+  std::vector<RunRecord> rows;
+  long number = 1;
+  while (std::getline(in, line)) {
+    ++number;
+    try {
+      rows.push_back(parse_run_row(line, key_count));
+    } catch (const std::invalid_argument& e) {
+      throw std::invalid_argument(runs_csv.string() + ":" + std::to_string(number) + ": " + e.what());
+    }
+  }
+  return rows;
+}
+
+std::string machine_description() {
+  std::string model;
+  std::ifstream cpu("/proc/cpuinfo");
+  std::string line;
+  while (std::getline(cpu, line))
+    if (line.rfind("model name", 0) == 0) {
+      model = line.substr(line.find(':') + 2);
+      break;
+    }
+  utsname u{};
+  uname(&u);
+  return (model.empty() ? std::string("unknown CPU") : model) + " (" + std::to_string(std::thread::hardware_concurrency()) +
+         " cores), " + u.sysname + " " + u.release;
+}
+
+std::string report_markdown(const EnsemblePlan& plan, const std::vector<RunRecord>& rows, const std::string& command,
+                            const std::string& machine, const std::vector<std::string>& figures) {
+  const auto& laws = plan.study().laws;
+  std::ostringstream s;
+  study_section(s, plan, rows, command, machine);
+  runs_section(s, laws, rows);
+  features_section(s, laws, rows);
+  if (laws.size() > 1) divergence_section(s, laws, rows, figures);
+  if (const auto axes = map_axes(plan.study())) map_section(s, build_outcome_map(*axes, laws, rows), figures);
+  cost_section(s, laws, rows);
+  return s.str();
+}
+
+ReportOutcome write_report(const EnsemblePlan& plan, const std::filesystem::path& dir, const std::string& command,
+                           bool draw) {
+  const auto rows = read_runs(dir / "runs.csv", plan.study().vary.size());
+  std::optional<OutcomeMap> map;
+  if (const auto axes = map_axes(plan.study())) map = build_outcome_map(*axes, plan.study().laws, rows);
+  ReportOutcome out;
+  out.figures = write_figures(dir, plan.study().name, plan.study().laws, rows, map, draw);
+  // Link the figures that exist (drawn now, or by an earlier run of gnuplot).
+  std::vector<std::string> links;
+  for (const auto& entry : {"divergence", "map-final_class", "map-t_vertical", "map-final_gamma3", "map-changes"}) {
+    const std::string f = std::string("figures/") + entry + ".png";
+    if (std::filesystem::exists(dir / f)) links.push_back(f);
+  }
+  out.report = dir / "report.md";
+  support::write_file_atomically(out.report, report_markdown(plan, rows, command, machine_description(), links));
+  return out;
+}
+
+}  // namespace frictionlab::dynamics::ensemble

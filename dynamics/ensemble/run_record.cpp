@@ -1,0 +1,149 @@
+#include "dynamics/ensemble/run_record.h"
+
+#include <charconv>
+#include <cmath>
+#include <stdexcept>
+
+#include "dynamics/ensemble/csv_row.h"
+#include "friction/support/errors.h"
+
+namespace frictionlab::dynamics::ensemble {
+namespace {
+
+const std::vector<std::string> kBefore = {"run", "start", "replica", "law"};
+const std::vector<std::string> kAfter = {
+    "reason",     "final_class",  "t_final",       "wall_time",     "steps",           "rhs_calls",
+    "t_vertical", "vertical_pole", "plateau_tilt_deg", "t_rest",    "final_gamma3",    "liftoffs",
+    "min_n_over_mg", "work_slide", "work_spin",     "t_diverge",     "diverge_ref",     "diverge_horizon",
+    "message"};
+
+void integer_field(std::string& row, long x) { row += std::to_string(x); }
+
+long parse_integer(const std::string& field, std::string_view column) {
+  long x = 0;
+  const auto [end, ec] = std::from_chars(field.data(), field.data() + field.size(), x);
+  if (field.empty() || ec != std::errc() || end != field.data() + field.size())
+    throw std::invalid_argument("column " + std::string(column) + " holds '" + field + "', not an integer");
+  return x;
+}
+
+}  // namespace
+
+std::string outcome_class(std::string_view reason, double final_gamma3, const paper::FeatureThresholds& th) {
+  if (reason == RunRecord::kFailed) return "failed";
+  if (reason != "t_end" && reason != "rest" && reason != "rolling") return "stopped";
+  if (final_gamma3 > th.near_vertical) return "pole+";
+  if (final_gamma3 < -th.near_vertical) return "pole-";
+  return "tilted";
+}
+
+std::vector<std::string> run_columns(const std::vector<std::string>& keys) {
+  std::vector<std::string> c = kBefore;
+  c.insert(c.end(), keys.begin(), keys.end());
+  c.insert(c.end(), kAfter.begin(), kAfter.end());
+  return c;
+}
+
+std::string runs_header(const std::vector<std::string>& keys) {
+  std::string h;
+  for (const auto& c : run_columns(keys)) {
+    if (!h.empty()) h.push_back(',');
+    append_text_field(h, c);
+  }
+  return h + "\n";
+}
+
+std::string to_csv_row(const RunRecord& r) {
+  std::string row;
+  row.reserve(256);
+  integer_field(row, r.run);
+  row.push_back(',');
+  integer_field(row, r.start);
+  row.push_back(',');
+  integer_field(row, r.replica);
+  row.push_back(',');
+  append_text_field(row, r.law);
+  for (const double v : r.values) {
+    row.push_back(',');
+    append_number_field(row, v);
+  }
+  const auto num = [&](double x) {
+    row.push_back(',');
+    append_number_field(row, x);
+  };
+  const auto integer = [&](long x) {
+    row.push_back(',');
+    integer_field(row, x);
+  };
+  const auto text = [&](std::string_view s) {
+    row.push_back(',');
+    append_text_field(row, s);
+  };
+  text(r.reason);
+  text(r.final_class);
+  num(r.t_final);
+  num(r.wall_time);
+  integer(r.steps);
+  integer(r.rhs_calls);
+  num(r.t_vertical);
+  integer(r.vertical_pole);
+  num(r.plateau_tilt_deg);
+  num(r.t_rest);
+  num(r.final_gamma3);
+  integer(r.liftoffs);
+  num(r.min_n_over_mg);
+  num(r.work_slide);
+  num(r.work_spin);
+  num(r.t_diverge);
+  text(r.diverge_ref);
+  num(r.diverge_horizon);
+  text(support::one_line(r.message));
+  row.push_back('\n');
+  return row;
+}
+
+RunRecord parse_run_row(std::string_view line, std::size_t key_count) {
+  const std::vector<std::string> f = split_csv_line(line);
+  const std::size_t expected = kBefore.size() + key_count + kAfter.size();
+  if (f.size() != expected)
+    throw std::invalid_argument("a row of runs.csv has " + std::to_string(f.size()) + " fields, not " +
+                                std::to_string(expected));
+  RunRecord r;
+  std::size_t i = 0;
+  r.run = parse_integer(f[i++], "run");
+  r.start = parse_integer(f[i++], "start");
+  r.replica = parse_integer(f[i++], "replica");
+  r.law = f[i++];
+  for (std::size_t k = 0; k < key_count; ++k) r.values.push_back(parse_number_field(f[i++], "of a varied key"));
+  r.reason = f[i++];
+  r.final_class = f[i++];
+  r.t_final = parse_number_field(f[i++], "t_final");
+  r.wall_time = parse_number_field(f[i++], "wall_time");
+  r.steps = parse_integer(f[i++], "steps");
+  r.rhs_calls = parse_integer(f[i++], "rhs_calls");
+  r.t_vertical = parse_number_field(f[i++], "t_vertical");
+  r.vertical_pole = static_cast<int>(parse_integer(f[i++], "vertical_pole"));
+  r.plateau_tilt_deg = parse_number_field(f[i++], "plateau_tilt_deg");
+  r.t_rest = parse_number_field(f[i++], "t_rest");
+  r.final_gamma3 = parse_number_field(f[i++], "final_gamma3");
+  r.liftoffs = parse_integer(f[i++], "liftoffs");
+  r.min_n_over_mg = parse_number_field(f[i++], "min_n_over_mg");
+  r.work_slide = parse_number_field(f[i++], "work_slide");
+  r.work_spin = parse_number_field(f[i++], "work_spin");
+  r.t_diverge = parse_number_field(f[i++], "t_diverge");
+  r.diverge_ref = f[i++];
+  r.diverge_horizon = parse_number_field(f[i++], "diverge_horizon");
+  r.message = f[i++];
+  return r;
+}
+
+long run_index_of_row(std::string_view line) {
+  long x = -1;
+  const auto comma = line.find(',');
+  const std::string_view first = line.substr(0, comma);
+  const auto [end, ec] = std::from_chars(first.data(), first.data() + first.size(), x);
+  if (first.empty() || ec != std::errc() || end != first.data() + first.size() || x < 0) return -1;
+  return x;
+}
+
+}  // namespace frictionlab::dynamics::ensemble

@@ -1,0 +1,31 @@
+#pragma once
+// What an ensemble keeps of a run while it runs, in memory only: the samples that the features
+// (dynamics/paper/run_features.h) need — t, gamma3, kinetic energy, contact — in a
+// paper::RunSeries whose other columns stay empty, and, if asked, a decimated trajectory. About
+// 25 bytes per sample: 2.5 MB for 1000 s at output_dt = 0.01 s. No file is written.
+
+#include "dynamics/ensemble/decimated_trajectory.h"
+#include "dynamics/observer.h"
+#include "dynamics/paper/run_series.h"
+
+namespace frictionlab::dynamics::ensemble {
+
+class RunRecorder final : public Observer {
+ public:
+  /// `weight` = m g (N, > 0); `decimation_dt` (s) > 0 records a decimated trajectory, 0 none.
+  RunRecorder(double weight, double decimation_dt);
+  void sample(const Sample& s) override;
+
+  [[nodiscard]] paper::RunSeries& series() { return series_; }
+  [[nodiscard]] DecimatedTrajectory& trajectory() { return trajectory_; }
+
+ private:
+  double weight_;
+  double decimation_dt_;
+  long next_decimated_ = 0;  // index k of the next multiple k dt to record
+  paper::RunSeries series_;
+  DecimatedTrajectory trajectory_;
+  bool provisional_ = false;  // the last row is the latest sample, not one due on the dt grid
+};
+
+}  // namespace frictionlab::dynamics::ensemble

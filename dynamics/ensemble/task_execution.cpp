@@ -1,0 +1,140 @@
+#include "dynamics/ensemble/task_execution.h"
+
+#include <algorithm>
+#include <chrono>
+#include <exception>
+
+#include "dynamics/ensemble/run_recorder.h"
+#include "dynamics/equations_of_motion.h"
+#include "dynamics/paper/experiment_report.h"
+#include "dynamics/paper/trajectory_compare.h"
+#include "dynamics/simulation.h"
+#include "friction/registry.h"
+#include "friction/support/errors.h"
+
+namespace frictionlab::dynamics::ensemble {
+namespace {
+
+// Samples to reserve at most (the recorder grows beyond if needed).
+constexpr std::size_t kMaxReserve = 200'000;
+
+// gamma3(t) of a reference run, kept for comparisons.
+struct Reference {
+  bool ran = false;
+  std::vector<double> t;
+  std::vector<double> gamma3;
+  double dt = 0.0;  // its sample interval
+};
+
+struct RunOutput {
+  FinishedRun finished;
+  Reference series;
+  bool interrupted = false;
+};
+
+RunOutput run_one(const EnsemblePlan& plan, const RunId& id, const ExecuteOptions& options) {
+  const auto wall_start = std::chrono::steady_clock::now();
+  RunOutput out;
+  RunRecord& r = out.finished.record;
+  r.run = plan.run_index(id);
+  r.start = id.start;
+  r.replica = id.replica;
+  r.law = plan.study().laws.at(static_cast<std::size_t>(id.law));
+  r.values = plan.start_values(id.start);
+  try {
+    const Scenario s = plan.scenario(id);
+    const auto law = friction::make_law(s.law);
+    const BodyOnPlane sys(s.body, s.contact, *law);
+    const double weight = s.body.mass * s.contact.g;
+    RunRecorder recorder(weight, options.trajectories ? plan.study().trajectory_dt : 0.0);
+    const auto expected = static_cast<std::size_t>(std::min(1e9, s.run.t_end / s.run.output_dt)) + 2;
+    paper::RunSeries& series = recorder.series();
+    const std::size_t reserve = std::min(kMaxReserve, expected);
+    series.t.reserve(reserve);
+    series.gamma3.reserve(reserve);
+    series.kinetic.reserve(reserve);
+    series.in_contact.reserve(reserve);
+    RunOptions run = s.run;
+    run.cancel = options.cancel;
+    const RunSummary sum = simulate(sys, initial_state(s), run, &recorder);
+    if (sum.reason == Termination::interrupted) {
+      out.interrupted = true;
+      return out;
+    }
+    const paper::FeatureThresholds th;
+    const paper::RunFeatures f = paper::extract_features(series, th);
+    r.reason = std::string(to_string(sum.reason));
+    r.t_final = sum.t_final;
+    r.steps = sum.steps;
+    r.rhs_calls = sum.rhs_calls + sum.sample_rhs_calls;
+    r.t_vertical = f.vertical.t_reached;
+    r.vertical_pole = f.vertical.pole;
+    r.plateau_tilt_deg = f.plateau.found ? f.plateau.tilt_deg() : kNaN;
+    r.t_rest = sum.reason == Termination::rest || sum.reason == Termination::rolling ? sum.t_final : kNaN;
+    r.final_gamma3 = f.gamma3_final_mean;
+    r.final_class = outcome_class(r.reason, r.final_gamma3, th);
+    r.liftoffs = sum.liftoffs;
+    r.min_n_over_mg = sum.min_normal_force / weight;
+    r.work_slide = slide_work(sum.x_final);
+    r.work_spin = spin_work(sum.x_final);
+    if (sum.reason != Termination::t_end && sum.reason != Termination::rest && sum.reason != Termination::rolling)
+      r.message = sum.message;
+    out.series.ran = true;
+    out.series.dt = s.run.output_dt;
+    out.series.t = std::move(series.t);
+    out.series.gamma3 = std::move(series.gamma3);
+    out.finished.trajectory = std::move(recorder.trajectory());
+  } catch (const std::exception& e) {
+    r.reason = std::string(RunRecord::kFailed);
+    r.final_class = outcome_class(r.reason, kNaN);
+    r.message = support::one_line(e.what());
+  }
+  r.wall_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+  return out;
+}
+
+// Fills the divergence columns of `r` (its own series `own`) against `ref`.
+void compare(RunRecord& r, const Reference& own, const Reference& ref, const std::string& ref_name) {
+  if (!own.ran || !ref.ran || own.t.empty() || ref.t.empty()) return;
+  const paper::Divergence d =
+      paper::first_divergence(ref.t, ref.gamma3, own.t, own.gamma3, paper::kDivergenceThreshold, ref.dt);
+  r.diverge_ref = ref_name;
+  r.diverge_horizon = d.horizon;
+  r.t_diverge = d.found ? d.t : kNaN;
+}
+
+}  // namespace
+
+bool execute_task(const EnsemblePlan& plan, const TaskOrder& order, const ExecuteOptions& options,
+                  const std::function<void(FinishedRun&&)>& emit) {
+  const Task& task = order.task;
+  const auto todo = [&](long run) { return std::binary_search(order.todo.begin(), order.todo.end(), run); };
+  const std::string& reference_name = plan.study().reference_law();
+  Reference first_reference;  // the reference law on the pair's first replica
+  for (long k = 0; k < task.replica_count; ++k) {
+    const long replica = task.first_replica + k;
+    const long ref_run = plan.run_index({task.start, replica, 0});
+    bool others = false;
+    for (int law = 1; law < plan.laws(); ++law) others = others || todo(plan.run_index({task.start, replica, law}));
+    const bool floor_later = k == 0 && task.replica_count == 2 && todo(plan.run_index({task.start, replica + 1, 0}));
+    if (!todo(ref_run) && !others && !floor_later) continue;
+
+    RunOutput ref = run_one(plan, {task.start, replica, 0}, options);
+    if (ref.interrupted) return false;
+    if (k == 1) compare(ref.finished.record, ref.series, first_reference, "replica:" + std::to_string(task.first_replica));
+    if (todo(ref_run)) emit(std::move(ref.finished));
+    for (int law = 1; law < plan.laws(); ++law) {
+      if (options.cancel && options.cancel->load()) return false;
+      if (!todo(plan.run_index({task.start, replica, law}))) continue;
+      RunOutput run = run_one(plan, {task.start, replica, law}, options);
+      if (run.interrupted) return false;
+      compare(run.finished.record, run.series, ref.series, reference_name);
+      emit(std::move(run.finished));
+    }
+    if (k == 0) first_reference = std::move(ref.series);
+    if (options.cancel && options.cancel->load()) return false;
+  }
+  return true;
+}
+
+}  // namespace frictionlab::dynamics::ensemble

@@ -1,0 +1,90 @@
+#include "dynamics/ensemble/varied_key.h"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "friction/support/errors.h"
+#include "friction/support/number_format.h"
+
+namespace frictionlab::dynamics::ensemble {
+namespace {
+
+std::string vector_text(const Eigen::Vector3d& v) {
+  std::string out = "[";
+  for (int i = 0; i < 3; ++i) {
+    if (i > 0) out += ", ";
+    support::append_shortest(out, v[i]);
+  }
+  return out + "]";
+}
+
+}  // namespace
+
+VariedKey VariedKey::parse(const std::string& key, const std::string& where) {
+  VariedKey k;
+  k.name_ = key;
+  if (key == "initial.gamma3") {
+    k.kind_ = Kind::gamma3;
+    return k;
+  }
+  for (const auto& [prefix, kind] : {std::pair{std::string("initial.omega"), Kind::omega},
+                                     std::pair{std::string("initial.v"), Kind::velocity}}) {
+    if (key == prefix)
+      throw support::invalid_value(where, std::string_view(key),
+                                   "it is a vector; vary its components " + prefix + "1, " + prefix + "2, " + prefix + "3");
+    if (key.size() == prefix.size() + 1 && key.compare(0, prefix.size(), prefix) == 0 && key.back() >= '1' &&
+        key.back() <= '3') {
+      k.kind_ = kind;
+      k.component_ = key.back() - '1';
+      return k;
+    }
+  }
+  if (key == "initial.gamma")
+    throw support::invalid_value(where, std::string_view(key),
+                                 "it is a unit vector; vary the tilt initial.gamma3 (gamma = (sqrt(1 - gamma3^2), 0, gamma3))");
+  if (key == "contact.law")
+    throw support::invalid_value(where, std::string_view(key), "the laws are the study's `laws`, not a varied key");
+  return k;
+}
+
+StartState apply_start(const InitialState& base, const std::vector<VariedKey>& keys, const std::vector<double>& values) {
+  StartState s;
+  s.initial = base;
+  for (std::size_t i = 0; i < keys.size(); ++i) {
+    const VariedKey& k = keys[i];
+    const double x = values.at(i);
+    if (!std::isfinite(x)) throw support::invalid_value(k.name(), x, "it must be finite");
+    switch (k.kind()) {
+      case VariedKey::Kind::plain: {
+        std::string o = k.name() + "=";
+        support::append_shortest(o, x);
+        s.overrides.push_back(std::move(o));
+        break;
+      }
+      case VariedKey::Kind::gamma3:
+        if (!(std::abs(x) <= 1.0)) throw support::invalid_value(k.name(), x, "it is a cosine: -1 <= gamma3 <= 1");
+        s.initial.gamma = Eigen::Vector3d(std::sqrt(1.0 - x * x), 0.0, x);
+        s.gamma_set = true;
+        break;
+      case VariedKey::Kind::omega:
+        s.initial.omega[k.component()] = x;
+        s.omega_set = true;
+        break;
+      case VariedKey::Kind::velocity:
+        s.initial.v[k.component()] = x;
+        s.velocity_set = true;
+        break;
+    }
+  }
+  return s;
+}
+
+std::vector<std::string> start_overrides(const StartState& state) {
+  std::vector<std::string> out = state.overrides;
+  if (state.gamma_set) out.push_back("initial.gamma=" + vector_text(state.initial.gamma));
+  if (state.omega_set) out.push_back("initial.omega=" + vector_text(state.initial.omega));
+  if (state.velocity_set) out.push_back("initial.v=" + vector_text(state.initial.v));
+  return out;
+}
+
+}  // namespace frictionlab::dynamics::ensemble

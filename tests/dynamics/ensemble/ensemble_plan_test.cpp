@@ -1,0 +1,159 @@
+// Every run of a study, numbered and grouped into tasks (dynamics/ensemble/ensemble_plan.h).
+
+#include "dynamics/ensemble/ensemble_plan.h"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <set>
+#include <stdexcept>
+
+namespace frictionlab::dynamics::ensemble {
+namespace {
+
+const std::filesystem::path kStudies = std::filesystem::path(FRICTIONLAB_SOURCE_DIR) / "data" / "studies";
+
+Study study(const std::string& text) { return parse_study(text, "t.toml", kStudies); }
+
+const std::string kGrid = R"(scenario = "../scenarios/egg-printed-a.toml"
+laws = ["exact", "pade-reconstructed", "moller-ellipsoidal"]
+set = ["run.t_end=0.5"]
+[[vary]]
+key = "initial.gamma3"
+values = [0.9, 0.5]
+[[vary]]
+key = "initial.omega3"
+min = 10
+max = 30
+points = 3
+[replicas]
+count = 3
+size = 1e-6
+)";
+
+TEST(EnsemblePlan, RunsAreNumberedStartReplicaLaw) {
+  const EnsemblePlan p = EnsemblePlan::make(study(kGrid));
+  EXPECT_EQ(p.starts(), 6);
+  EXPECT_EQ(p.replicas(), 3);
+  EXPECT_EQ(p.laws(), 3);
+  EXPECT_EQ(p.runs(), 54);
+  for (long i = 0; i < p.runs(); ++i) EXPECT_EQ(p.run_index(p.run_id(i)), i);
+  const RunId id = p.run_id(p.run_index({.start = 4, .replica = 2, .law = 1}));
+  EXPECT_EQ(id.start, 4);
+  EXPECT_EQ(id.replica, 2);
+  EXPECT_EQ(id.law, 1);
+  EXPECT_EQ(p.start_values(0), (std::vector<double>{0.9, 10.0}));
+  EXPECT_EQ(p.start_values(5), (std::vector<double>{0.5, 30.0}));
+}
+
+TEST(EnsemblePlan, TasksPairReplicasAndCoverEveryRunOnce) {
+  const EnsemblePlan p = EnsemblePlan::make(study(kGrid));
+  EXPECT_EQ(p.pairs_per_start(), 2);
+  EXPECT_EQ(p.tasks(), 12);
+  std::multiset<long> runs;
+  for (long t = 0; t < p.tasks(); ++t) {
+    const Task task = p.task(t);
+    EXPECT_LE(task.replica_count, 2);
+    for (long r = task.first_replica; r < task.first_replica + task.replica_count; ++r)
+      for (int law = 0; law < p.laws(); ++law) runs.insert(p.run_index({task.start, r, law}));
+  }
+  EXPECT_EQ(runs.size(), static_cast<std::size_t>(p.runs()));
+  EXPECT_EQ(std::set<long>(runs.begin(), runs.end()).size(), runs.size());
+  EXPECT_EQ(p.task(1).first_replica, 2);
+  EXPECT_EQ(p.task(1).replica_count, 1) << "three replicas: pairs (0, 1) and (2)";
+}
+
+TEST(EnsemblePlan, ARunsScenarioHasItsStartReplicaAndLaw) {
+  const EnsemblePlan p = EnsemblePlan::make(study(kGrid));
+  const Scenario s = p.scenario({.start = 3, .replica = 0, .law = 2});  // gamma3 0.5, omega3 10
+  EXPECT_EQ(s.law, "moller-ellipsoidal");
+  EXPECT_NEAR(s.initial.gamma[2], 0.5, 1e-15);  // the scenario normalises gamma again
+  EXPECT_NEAR(s.initial.gamma[0], std::sqrt(0.75), 1e-15);
+  EXPECT_EQ(s.initial.omega, Eigen::Vector3d(0.0, 0.0, 10.0));
+  EXPECT_EQ(s.run.t_end, 0.5) << "the study's set";
+  EXPECT_EQ(p.overrides({3, 0, 2}).back(), "contact.law=moller-ellipsoidal");
+  // Replicas of one start differ a little; the laws of one replica share the start exactly.
+  const Scenario r1 = p.scenario({3, 1, 0});
+  EXPECT_NE(r1.initial.gamma, s.initial.gamma);
+  EXPECT_LT((r1.initial.gamma - s.initial.gamma).norm(), 1e-5);
+  EXPECT_EQ(p.scenario({3, 1, 1}).initial.gamma, r1.initial.gamma);
+  EXPECT_EQ(p.scenario({3, 1, 1}).initial.omega, r1.initial.omega);
+}
+
+TEST(EnsemblePlan, HashIdentifiesTheStudyAndItsScenario) {
+  const EnsemblePlan a = EnsemblePlan::make(study(kGrid));
+  EXPECT_EQ(a.hash().size(), 16u);
+  EXPECT_EQ(EnsemblePlan::make(study(kGrid)).hash(), a.hash());
+  EXPECT_NE(EnsemblePlan::make(study("seed = 2\n" + kGrid)).hash(), a.hash());
+  EXPECT_EQ(EnsemblePlan::make(study("# a comment\n" + kGrid)).hash(), a.hash()) << "comments do not count";
+  // The same study text over another scenario file.
+  const auto dir = std::filesystem::temp_directory_path() / "frictionlab_plan_hash";
+  std::filesystem::create_directories(dir / "studies");
+  std::filesystem::create_directories(dir / "scenarios");
+  std::filesystem::copy_file(kStudies / "../scenarios/egg-printed-a.toml", dir / "scenarios/egg-printed-a.toml",
+                             std::filesystem::copy_options::overwrite_existing);
+  const auto other = [&] { return EnsemblePlan::make(parse_study(kGrid, "t.toml", dir / "studies")).hash(); };
+  EXPECT_EQ(other(), a.hash());
+  std::ofstream(dir / "scenarios/egg-printed-a.toml", std::ios::app) << "# a comment\n";
+  EXPECT_EQ(other(), a.hash()) << "comments do not count";
+  {
+    std::ifstream in(dir / "scenarios/egg-printed-a.toml");
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    text.replace(text.find("k = 0.1"), 7, "k = 0.2");
+    std::ofstream(dir / "scenarios/egg-printed-a.toml", std::ios::trunc) << text;
+  }
+  EXPECT_NE(other(), a.hash()) << "a changed value of the scenario";
+  std::filesystem::remove_all(dir);
+}
+
+TEST(EnsemblePlan, SampledDesignsMapTheUnitBoxOntoTheAxes) {
+  const EnsemblePlan p = EnsemblePlan::make(study(R"(scenario = "../scenarios/egg-printed-a.toml"
+laws = ["exact"]
+[design]
+type = "sobol"
+points = 3
+[[vary]]
+key = "initial.gamma3"
+min = 0.2
+max = 0.6
+[[vary]]
+key = "contact.k"
+min = 0.01
+max = 1
+scale = "log"
+)"));
+  ASSERT_EQ(p.starts(), 3);
+  // Sobol's first point (0.5, 0.5): the middle of the linear axis, the geometric middle of the log one.
+  EXPECT_NEAR(p.start_values(0)[0], 0.4, 1e-15);
+  EXPECT_NEAR(p.start_values(0)[1], 0.1, 1e-15);
+  EXPECT_NEAR(p.start_values(1)[0], 0.5, 1e-15);  // 0.75
+  EXPECT_NEAR(p.scenario({1, 0, 0}).contact.k, std::pow(10.0, -2.0 + 0.25 * 2.0), 1e-15);
+}
+
+TEST(EnsemblePlan, BadKeysLawsAndScenariosAreOneLineNamingThem) {
+  const std::string head = "scenario = \"../scenarios/egg-printed-a.toml\"\n";
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {head + "laws = [\"exact\", \"pade-imagined\"]\n", "laws[1] = 'pade-imagined'"},
+      {head + "laws = [\"exact\"]\n[[vary]]\nkey = \"contact.kk\"\nvalues = [1]\n", "vary[0] = 'contact.kk'"},
+      {head + "laws = [\"exact\"]\n[[vary]]\nkey = \"contact.k\"\nmin = -1\nmax = 1\npoints = 2\n", "vary[0] = 'contact.k' is invalid: at min"},
+      {head + "laws = [\"exact\"]\n[[vary]]\nkey = \"initial.gamma3\"\nmin = 0\nmax = 2\npoints = 2\n", "at max"},
+      {head + "laws = [\"exact\"]\n[[vary]]\nkey = \"initial.omega\"\nvalues = [1]\n", "vary[0].key = 'initial.omega'"},
+      {head + "laws = [\"exact\"]\nset = [\"contact.law=exact\"]\n", "set[0] = 'contact.law=exact'"},
+      {head + "laws = [\"exact\"]\nset = [\"run.t_edn=1\"]\n", "run.t_edn"},
+      {"scenario = \"no-such.toml\"\nlaws = [\"exact\"]\n", "no-such.toml"},
+  };
+  for (const auto& [text, key] : cases) {
+    try {
+      (void)EnsemblePlan::make(study(text));
+      ADD_FAILURE() << "accepted:\n" << text;
+    } catch (const std::invalid_argument& e) {
+      const std::string m = e.what();
+      EXPECT_NE(m.find(key), std::string::npos) << m;
+      EXPECT_EQ(m.rfind("t.toml: ", 0), 0u) << m;
+      EXPECT_EQ(m.find('\n'), std::string::npos) << m;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace frictionlab::dynamics::ensemble

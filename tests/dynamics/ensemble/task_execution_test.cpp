@@ -1,0 +1,115 @@
+// One task of an ensemble (dynamics/ensemble/task_execution.h): every run emitted once, the
+// comparisons against the reference law and between replicas, and a resumed task giving the same
+// rows as an uninterrupted one.
+
+#include "dynamics/ensemble/task_execution.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <map>
+
+namespace frictionlab::dynamics::ensemble {
+namespace {
+
+const std::filesystem::path kStudies = std::filesystem::path(FRICTIONLAB_SOURCE_DIR) / "data" / "studies";
+
+// Case a of the printed egg for 0.5 s: the printed Padé law stops at its pole at 0.316 s.
+EnsemblePlan plan() {
+  return EnsemblePlan::make(parse_study(R"(scenario = "../scenarios/egg-printed-a.toml"
+laws = ["exact", "pade-printed", "moller-ellipsoidal"]
+set = ["run.t_end=0.5", "run.output_dt=0.01"]
+[replicas]
+count = 2
+size = 1e-9
+)",
+                                        "t.toml", kStudies));
+}
+
+std::map<long, RunRecord> run_task(const EnsemblePlan& p, const TaskOrder& order, bool* completed = nullptr,
+                                   const std::atomic<bool>* cancel = nullptr) {
+  std::map<long, RunRecord> out;
+  ExecuteOptions o;
+  o.cancel = cancel;
+  const bool done = execute_task(p, order, o, [&](FinishedRun&& r) {
+    EXPECT_FALSE(out.count(r.record.run)) << "emitted twice: " << r.record.run;
+    out[r.record.run] = r.record;
+  });
+  if (completed) *completed = done;
+  return out;
+}
+
+TaskOrder whole(const EnsemblePlan& p) {
+  TaskOrder o;
+  o.task = p.task(0);
+  for (long i = 0; i < p.runs(); ++i) o.todo.push_back(i);
+  return o;
+}
+
+TEST(EnsembleTaskExecution, EveryRunIsEmittedWithItsComparison) {
+  const EnsemblePlan p = plan();
+  ASSERT_EQ(p.tasks(), 1);
+  bool completed = false;
+  const auto rows = run_task(p, whole(p), &completed);
+  EXPECT_TRUE(completed);
+  ASSERT_EQ(rows.size(), 6u);
+  // The reference on replica 0 is compared with nothing; on replica 1 with replica 0 (the floor).
+  EXPECT_EQ(rows.at(0).diverge_ref, "");
+  EXPECT_EQ(rows.at(3).diverge_ref, "replica:0");
+  EXPECT_EQ(rows.at(3).diverge_horizon, 0.5);
+  EXPECT_TRUE(std::isnan(rows.at(3).t_diverge)) << "a 1e-9 perturbation does not part in 0.5 s";
+  // The other laws against the reference on their own replica, up to the end of the shorter run.
+  for (const long run : {1L, 4L}) {
+    EXPECT_EQ(rows.at(run).law, "pade-printed");
+    EXPECT_EQ(rows.at(run).reason, "law-pole");
+    EXPECT_EQ(rows.at(run).final_class, "stopped");
+    EXPECT_EQ(rows.at(run).diverge_ref, "exact");
+    EXPECT_EQ(rows.at(run).diverge_horizon, rows.at(run).t_final) << "it stopped first";
+    EXPECT_FALSE(rows.at(run).message.empty());
+  }
+  for (const long run : {2L, 5L}) {
+    EXPECT_EQ(rows.at(run).reason, "t_end");
+    EXPECT_EQ(rows.at(run).diverge_horizon, 0.5);
+    EXPECT_TRUE(rows.at(run).message.empty());
+  }
+  for (const auto& [run, r] : rows) {
+    EXPECT_EQ(r.run, run);
+    EXPECT_EQ(r.replica, run / 3);
+    EXPECT_GT(r.steps, 0);
+    EXPECT_GT(r.rhs_calls, 12 * r.steps) << "rk8pd: 12 or 13 calls a step, plus the samples'";
+    if (r.reason == "t_end") {
+      EXPECT_GT(r.liftoffs, 0) << "case a starts bouncing (docs/experiments.md)";
+    }
+    EXPECT_GE(r.work_slide, 0.0);
+    EXPECT_GT(r.wall_time, 0.0);
+  }
+}
+
+TEST(EnsembleTaskExecution, AResumedTaskRecomputesItsReferenceAndGivesTheSameRows) {
+  const EnsemblePlan p = plan();
+  auto all = run_task(p, whole(p));
+  // Only the Möller run of replica 1 and the reference of replica 1 (which needs replica 0's) are left.
+  TaskOrder rest;
+  rest.task = p.task(0);
+  rest.todo = {3, 5};
+  const auto again = run_task(p, rest);
+  ASSERT_EQ(again.size(), 2u);
+  for (const long run : {3L, 5L}) {
+    RunRecord a = all.at(run);
+    RunRecord b = again.at(run);
+    a.wall_time = b.wall_time = 0.0;
+    EXPECT_EQ(to_csv_row(b), to_csv_row(a)) << run;
+  }
+}
+
+TEST(EnsembleTaskExecution, AnInterruptedTaskEmitsNothingUnfinished) {
+  const EnsemblePlan p = plan();
+  std::atomic<bool> cancel{true};
+  bool completed = true;
+  const auto rows = run_task(p, whole(p), &completed, &cancel);
+  EXPECT_FALSE(completed);
+  EXPECT_TRUE(rows.empty());
+}
+
+}  // namespace
+}  // namespace frictionlab::dynamics::ensemble
