@@ -144,7 +144,7 @@ LawInfo info_of(const Entry& e, const LawArguments& args) {
   info.spec = args.spec();
   info.summary = e.summary;
   info.parameters = e.parameters;
-  info.reference = e.reference;
+  info.reference = e.reference && args.canonical() == e.name;  // exact:pressure=uniform is not the reference
   info.slow = e.slow;
   info.has_poles = law->has_poles();
   info.promises = law->promises();

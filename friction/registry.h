@@ -26,7 +26,8 @@ struct LawInfo {
   std::string spec;                      ///< the spec described, verbatim (list_laws(): the name)
   std::string summary;                   ///< one line: what the law is, where it comes from, its accuracy
   std::vector<LawParameter> parameters;  ///< what a spec may set (friction/law_spec.h)
-  bool reference = false;  ///< the law every other law is measured against (exactly one)
+  bool reference = false;  ///< the law every other law is measured against (exactly one, at its
+                           ///< defaults: `exact` and `exact:pressure=hertz`, not `exact:pressure=uniform`)
   bool slow = false;       ///< milliseconds per call: a cross-check for tests and small studies,
                            ///< not for simulations or full accuracy grids
   bool has_poles = false;  ///< FrictionLaw::has_poles(): it declares denominators to watch

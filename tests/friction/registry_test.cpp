@@ -80,6 +80,7 @@ TEST(RegistrySpec, ALawKnowsTheSpecItWasMadeFromVerbatim) {
   EXPECT_EQ(info.name, "exact");
   EXPECT_EQ(info.spec, "exact:pressure=hertz");
   EXPECT_TRUE(info.reference);
+  EXPECT_FALSE(law_info("exact:pressure=uniform").reference);  // another law than the reference
 }
 
 TEST(RegistrySpec, TheExactLawDeclaresItsPressure) {
