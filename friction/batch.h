@@ -6,10 +6,11 @@
 // untouched), then one contact per line; blank lines are skipped. Numbers are C locale decimals
 // (a leading '+' allowed); one outside the double range ("1e999", "1e-400") is named as such.
 //
-// Output: every input column as it was, then (with more than one law) a `law` column, then F1, F2,
-// M each in the shortest text that reads back to the same double (lossless, never localised). Rows
-// come in input order; with several laws, each input row gives one output row per law, in the
-// order the laws are given.
+// Output: every input column as it was, then (with more than one law) a `law` column naming each
+// law by its spec (FrictionLaw::spec(), quoted if it holds a comma), then F1, F2, M each in the
+// shortest text that reads back to the same double (lossless, never localised). Rows come in input
+// order; with several laws, each input row gives one output row per law, in the order the laws are
+// given.
 //
 // Streaming: rows are read, evaluated and written one at a time, so memory does not grow with the
 // table. With OnError::stop (the default) nothing reaches `out` unless every row succeeds: rows go
@@ -65,6 +66,10 @@ BatchSummary evaluate_csv(const std::vector<const FrictionLaw*>& laws, std::istr
 
 /// One law, OnError::stop. Returns the number of rows evaluated.
 std::size_t evaluate_csv(const FrictionLaw& law, std::istream& in, std::ostream& out);
+
+/// `text` as one CSV field: as it is, or in double quotes (inner quotes doubled) if it holds a
+/// comma, a double quote or a line break, as a law spec with several parameters does.
+[[nodiscard]] std::string csv_field(std::string_view text);
 
 /// "F1,F2,M" of one evaluation, each in the shortest round-trip form (support::shortest).
 [[nodiscard]] std::string format_forces(const FrictionForces& f);
