@@ -3,10 +3,10 @@
 #include <functional>
 #include <stdexcept>
 
-#include "friction/coulomb_decoupled_law.h"
+#include "friction/decoupled_law.h"
+#include "friction/ellipsoidal_law.h"
 #include "friction/exact_law.h"
 #include "friction/exact_reference_law.h"
-#include "friction/moller_ellipsoidal_law.h"
 #include "friction/pade_printed_law.h"
 #include "friction/pade_reconstructed_law.h"
 
@@ -37,8 +37,8 @@ const std::vector<Entry>& entries() {
       {[] { return std::make_unique<PadePrintedLaw>(PadeAlpha::major); }},
       {[] { return std::make_unique<PadePrintedLaw>(PadeAlpha::minor); }},
       {factory<PadeReconstructedLaw>()},
-      {factory<MollerEllipsoidalLaw>()},
-      {factory<CoulombDecoupledLaw>()},
+      {[] { return std::make_unique<EllipsoidalLaw>(std::nullopt, "moller-ellipsoidal"); }},
+      {[] { return std::make_unique<DecoupledLaw>(std::nullopt, "coulomb-decoupled"); }},
   };
   return all;
 }
