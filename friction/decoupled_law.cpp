@@ -2,6 +2,7 @@
 
 #include <boost/math/special_functions/ellint_2.hpp>
 #include <cmath>
+#include <limits>
 
 #include "friction/support/errors.h"
 #include "friction/support/number_format.h"
@@ -26,6 +27,12 @@ DecoupledLaw::DecoupledLaw(std::optional<double> r_spin, std::string name)
   if (r_spin && !(std::isfinite(*r_spin) && *r_spin >= 0.0)) {
     throw support::invalid_value("r_spin", *r_spin, "the torsional length must be a finite number >= 0 m");
   }
+}
+
+std::vector<LawParameter> DecoupledLaw::parameters() {
+  return {LawParameter::number("r_spin", 0.0, /*min_open=*/false, std::numeric_limits<double>::infinity(), true, "m",
+                               std::nullopt, "M0 = (3/8) kN a E(e), the exact pure-spin torque of the Hertz patch",
+                               "the torsional length of Bullet, Chrono, Gazebo: torque limit N r_spin")};
 }
 
 LawPromises DecoupledLaw::promises() const {

@@ -35,8 +35,10 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "friction/law.h"
+#include "friction/law_spec.h"
 
 namespace frictionlab::friction {
 
@@ -48,6 +50,10 @@ class DecoupledLaw final : public FrictionLaw {
   /// of the Hertz patch. std::invalid_argument naming r_spin otherwise. `name`: the registry name
   /// the law answers to ("decoupled"; "coulomb-decoupled" for the default under its old name).
   explicit DecoupledLaw(std::optional<double> r_spin = std::nullopt, std::string name = "decoupled");
+
+  /// What `decoupled:r_spin=...` may set (friction/law_spec.h): r_spin, m, >= 0; none: the exact
+  /// Hertz pure-spin torque.
+  [[nodiscard]] static std::vector<LawParameter> parameters();
 
   [[nodiscard]] std::string_view name() const override { return name_; }
   [[nodiscard]] std::string_view summary() const override { return summary_; }

@@ -48,6 +48,12 @@ EllipsoidalLaw::EllipsoidalLaw(std::optional<double> Rb, std::string name)
   }
 }
 
+std::vector<LawParameter> EllipsoidalLaw::parameters() {
+  return {LawParameter::number("Rb", 0.0, /*min_open=*/true, std::numeric_limits<double>::infinity(), true, "m",
+                               std::nullopt, "Rb = (3 pi/16) sqrt(a b), exact at pure spin on a circular Hertz patch",
+                               "the radius of the friction ellipsoid: pure-spin torque kN Rb")};
+}
+
 LawPromises EllipsoidalLaw::promises() const {
   LawPromises p;
   p.F1_in_Omega = Parity::even;

@@ -46,8 +46,10 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "friction/law.h"
+#include "friction/law_spec.h"
 
 namespace frictionlab::friction {
 
@@ -65,6 +67,9 @@ class EllipsoidalLaw final : public FrictionLaw {
   /// name the law answers to ("ellipsoidal"; "moller-ellipsoidal" for the default under its old
   /// name).
   explicit EllipsoidalLaw(std::optional<double> Rb = std::nullopt, std::string name = "ellipsoidal");
+
+  /// What `ellipsoidal:Rb=...` may set (friction/law_spec.h): Rb, m, > 0; none: Hertz-calibrated.
+  [[nodiscard]] static std::vector<LawParameter> parameters();
 
   [[nodiscard]] std::string_view name() const override { return name_; }
   [[nodiscard]] std::string_view summary() const override { return summary_; }

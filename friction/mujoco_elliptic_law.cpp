@@ -41,6 +41,12 @@ MujocoEllipticLaw::MujocoEllipticLaw(double torsional)
   }
 }
 
+std::vector<LawParameter> MujocoEllipticLaw::parameters() {
+  return {LawParameter::number("torsional", 0.0, /*min_open=*/true, std::numeric_limits<double>::infinity(), true,
+                               "m", kDefaultTorsional, "",
+                               "MuJoCo's torsional friction mu3 (MJCF friction=\"k mu3 ...\"): pure-spin torque N mu3")};
+}
+
 LawPromises MujocoEllipticLaw::promises() const {
   LawPromises p;
   p.F1_in_Omega = Parity::even;

@@ -30,7 +30,7 @@
 // the cone rather than on its boundary. This law is MuJoCo's cone taken at its word: the limit of
 // a hard, maximally dissipative contact.
 //
-// The parameter `torsional` (m, finite, > 0) is the MJCF value; k is the contact's Coulomb
+// The parameter `torsional` (m, finite, > 0; default 0.005, MuJoCo's) is the MJCF value; k is the contact's Coulomb
 // coefficient (ContactInput::k). With k = 0 the tangential force vanishes and the torque is
 // N torsional sign(Omega). Limits: U = Omega = 0: all zero; Omega = 0: F1 = kN; U = 0:
 // M = N torsional sign(Omega). Dissipative, F1 even and M odd in Omega, independent of psi. The
@@ -38,8 +38,10 @@
 // torsional > 1 m and N near the largest double (rejected with std::invalid_argument).
 
 #include <string>
+#include <vector>
 
 #include "friction/law.h"
+#include "friction/law_spec.h"
 
 namespace frictionlab::friction {
 
@@ -49,7 +51,13 @@ class MujocoEllipticLaw final : public FrictionLaw {
  public:
   /// torsional: MJCF's torsional friction coefficient (m), finite and > 0; std::invalid_argument
   /// naming it otherwise.
-  explicit MujocoEllipticLaw(double torsional);
+  explicit MujocoEllipticLaw(double torsional = kDefaultTorsional);
+
+  /// MuJoCo's default torsional coefficient (MJCF friction="1 0.005 0.0001"), m.
+  static constexpr double kDefaultTorsional = 0.005;
+  /// What `mujoco-elliptic:torsional=...` may set (friction/law_spec.h): torsional, m, > 0,
+  /// default kDefaultTorsional.
+  [[nodiscard]] static std::vector<LawParameter> parameters();
 
   [[nodiscard]] std::string_view name() const override { return "mujoco-elliptic"; }
   [[nodiscard]] std::string_view summary() const override { return summary_; }
