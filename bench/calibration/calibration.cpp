@@ -10,6 +10,7 @@
 #include <ostream>
 #include <stdexcept>
 
+#include "friction/pressure.h"
 #include "friction/registry.h"
 #include "friction/support/errors.h"
 
@@ -38,7 +39,7 @@ std::vector<std::size_t> scope_indices(const accuracy::Grid& grid, Scope scope) 
 accuracy::LawValues values_at(const friction::FrictionLaw& law, const accuracy::Grid& grid,
                               const std::vector<std::size_t>& indices) {
   constexpr double nan = std::numeric_limits<double>::quiet_NaN();
-  accuracy::LawValues v{std::string(law.name()), std::vector<double>(grid.size(), nan),
+  accuracy::LawValues v{std::string(law.spec()), std::vector<double>(grid.size(), nan),
                         std::vector<double>(grid.size(), nan), std::vector<double>(grid.size(), nan)};
   for (const std::size_t i : indices) {
     const auto f = law.evaluate(accuracy::to_contact(grid.point(i)));
@@ -63,23 +64,20 @@ double max_torque_error(const EngineLaw& law, double c, const accuracy::Grid& gr
 
 }  // namespace
 
-const std::vector<Pressure>& pressures() {
-  static const std::vector<Pressure> all = {
-      {"hertz", 3.0 * std::numbers::pi / 16.0},
-  };
-  return all;
-}
-
-const Pressure& pressure(const std::string& name) {
-  std::string known;
-  for (const auto& p : pressures()) {
-    if (p.name == name) return p;
-    known += (known.empty() ? "" : ", ") + p.name;
+std::vector<std::string> exact_pressures() {
+  for (const auto& parameter : friction::law_info(friction::reference_law_name()).parameters) {
+    if (parameter.key == "pressure") return parameter.choices;
   }
-  throw std::invalid_argument("unknown pressure model '" + name + "'; known: " + known);
+  return {friction::pressure_names().front()};  // a reference law without the parameter: its default
 }
 
-std::string exact_spec(const Pressure&) { return friction::reference_law_name(); }
+double circle_spin_closed_form(const std::string& name) {
+  return std::numbers::pi / 2.0 * friction::pressure_pure_spin_factor(friction::parse_pressure(name));
+}
+
+std::string exact_spec(const std::string& pressure) {
+  return friction::reference_law_name() + ":pressure=" + pressure;
+}
 
 const char* scope_name(Scope scope) { return scope == Scope::circle ? "circle" : "grid"; }
 
@@ -101,7 +99,14 @@ bool CalibrationOptions::is_valid(std::string* error) const {
   }
   try {
     for (const auto& l : laws) (void)engine_law(l);
-    for (const auto& p : pressures) (void)pressure(p);
+    const auto known = exact_pressures();
+    for (const auto& p : pressures) {
+      if (std::find(known.begin(), known.end(), p) == known.end()) {
+        std::string list;
+        for (const auto& k : known) list += (list.empty() ? "" : ", ") + k;
+        return fail("pressure model '" + p + "' is not one the exact law offers: " + list);
+      }
+    }
   } catch (const std::invalid_argument& e) {
     return fail(e.what());
   }
@@ -141,11 +146,10 @@ CalibrationResult run_calibration(const CalibrationOptions& options) {
     if (options.laws.empty() || std::find(options.laws.begin(), options.laws.end(), l.name) != options.laws.end())
       laws.push_back(&l);
   }
-  std::vector<const Pressure*> chosen;
-  for (const auto& p : pressures()) {
-    if (options.pressures.empty() ||
-        std::find(options.pressures.begin(), options.pressures.end(), p.name) != options.pressures.end())
-      chosen.push_back(&p);
+  std::vector<std::string> chosen;
+  for (const auto& p : exact_pressures()) {
+    if (options.pressures.empty() || std::find(options.pressures.begin(), options.pressures.end(), p) != options.pressures.end())
+      chosen.push_back(p);
   }
 
   // The scan of c, log-spaced, both ends exact.
@@ -170,31 +174,31 @@ CalibrationResult run_calibration(const CalibrationOptions& options) {
     return c;
   };
 
-  for (const Pressure* p : chosen) {
-    const auto exact = friction::make_law(exact_spec(*p));
+  for (const std::string& p : chosen) {
+    const auto exact = friction::make_law(exact_spec(p));
     const auto te = std::chrono::steady_clock::now();
     const accuracy::LawValues ref = accuracy::evaluate_on_grid(*exact, grid, options.threads);
     if (options.progress) {
-      *options.progress << "calibrate: " << exact->name() << " on " << grid.size() << " points in "
+      *options.progress << "calibrate: " << exact->spec() << " on " << grid.size() << " points in "
                         << std::chrono::duration<double>(std::chrono::steady_clock::now() - te).count() << " s"
                         << std::endl;
     }
     const double spin = exact->evaluate({0.0, 1.0, 1.0, 1.0, 0.0, 1.0, 1.0}).M;
-    result.curves.push_back(curve_of(p->name, std::string(exact->name()), ref));
+    result.curves.push_back(curve_of(p, std::string(exact->spec()), ref));
 
     for (const EngineLaw* law : laws) {
       for (std::size_t sc = 0; sc < scopes.size(); ++sc) {
         const auto& idx = indices[sc];
         CalibrationRow row;
         row.law = law->name;
-        row.pressure = p->name;
+        row.pressure = p;
         row.scope = scopes[sc];
         row.exact_circle_spin = spin;
         const auto E = [&](double c) {
           ++row.objective_evaluations;
           return max_torque_error(*law, c, grid, ref, idx);
         };
-        ScanCurve curve{law->name, p->name, scopes[sc], scan, {}};
+        ScanCurve curve{law->name, p, scopes[sc], scan, {}};
         for (const double c : scan) curve.max_error_M.push_back(E(c));
         // E is unimodal (header): the scan's smallest value and its neighbours bracket the minimum.
         const auto jmin = static_cast<std::size_t>(
@@ -214,10 +218,10 @@ CalibrationResult run_calibration(const CalibrationOptions& options) {
         result.scans.push_back(std::move(curve));
         if (scopes[sc] == Scope::circle) {
           const auto made = make_engine_law(*law, c_best, 1.0, 1.0);
-          result.curves.push_back(curve_of(p->name, engine_spec(*law, c_best, 1.0, 1.0), values_at(*made, grid, curve_points)));
+          result.curves.push_back(curve_of(p, std::string(made->spec()), values_at(*made, grid, curve_points)));
         }
       }
-      if (options.progress) *options.progress << "calibrate: " << law->name << " against " << exact->name() << std::endl;
+      if (options.progress) *options.progress << "calibrate: " << law->name << " against " << exact->spec() << std::endl;
     }
   }
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

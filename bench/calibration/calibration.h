@@ -27,22 +27,19 @@
 
 namespace frictionlab::calibration {
 
-/// The pressure models of the exact law and their pure-spin torques of a circle, per kNa
-/// (docs/exact-law.md): hertz (3 pi/16), uniform (2/3), punch (pi/4).
-struct Pressure {
-  std::string name;           ///< the value of exact's `pressure` parameter
-  double circle_spin = 0.0;   ///< closed form of M/(kNa) at U = 0, mu = 1
-};
-[[nodiscard]] const std::vector<Pressure>& pressures();
-/// The pressure called `name`; std::invalid_argument listing the known names otherwise.
-[[nodiscard]] const Pressure& pressure(const std::string& name);
+/// The pressure models the exact law declares (its `pressure` choices, friction/pressure.h), in
+/// its order: the default set of the study.
+[[nodiscard]] std::vector<std::string> exact_pressures();
+/// The closed form of the exact pure-spin torque of a circle per kNa under pressure `name`:
+/// (pi/2) pressure_pure_spin_factor, i.e. Hertz 3 pi/16, uniform 2/3, punch pi/4.
+[[nodiscard]] double circle_spin_closed_form(const std::string& name);
 /// The spec of the exact law with that pressure ("exact:pressure=uniform").
-[[nodiscard]] std::string exact_spec(const Pressure& p);
+[[nodiscard]] std::string exact_spec(const std::string& pressure);
 
 struct CalibrationOptions {
   accuracy::GridSpec grid;          ///< defaults: the accuracy study's grid
   std::vector<std::string> laws;    ///< engine laws; empty: all of engine_laws()
-  std::vector<std::string> pressures;  ///< pressure models; empty: all of pressures()
+  std::vector<std::string> pressures;  ///< pressure models; empty: exact_pressures()
   double c_min = 0.05;              ///< the scan of E(c): c log-spaced over [c_min, c_max]
   double c_max = 2.0;
   std::size_t scan_points = 121;    ///< >= 3
@@ -94,7 +91,7 @@ struct Curve {
 
 struct CalibrationResult {
   accuracy::Grid grid;
-  std::vector<CalibrationRow> rows;  ///< per law, then pressure, then scope (circle, grid)
+  std::vector<CalibrationRow> rows;  ///< per pressure, then law, then scope (circle, grid)
   std::vector<ScanCurve> scans;      ///< same order
   std::vector<Curve> curves;         ///< per pressure: exact, then each law at its best c (circle)
   double seconds = 0.0;

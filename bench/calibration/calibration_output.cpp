@@ -139,7 +139,7 @@ void write_calibration_csv(std::ostream& out, const CalibrationResult& r) {
   for (const auto& row : r.rows) {
     const auto p = r.grid.point(row.best.worst_M);
     out << row.law << ',' << row.pressure << ',' << scope_name(row.scope) << ',' << num(row.exact_circle_spin)
-        << ',' << num(pressure(row.pressure).circle_spin);
+        << ',' << num(circle_spin_closed_form(row.pressure));
     for (const Errors* e : {&row.at_spin, &row.best}) {
       out << ',' << num(e->c) << ',' << num(e->max[0]) << ',' << num(e->max[1]) << ',' << num(e->max[2]) << ','
           << num(e->rms[2]);

@@ -2,21 +2,16 @@
 
 #include <stdexcept>
 
-#include "friction/decoupled_law.h"
-#include "friction/ellipsoidal_law.h"
-#include "friction/mujoco_elliptic_law.h"
+#include "friction/registry.h"
 #include "friction/support/number_format.h"
 
 namespace frictionlab::calibration {
 
 const std::vector<EngineLaw>& engine_laws() {
   static const std::vector<EngineLaw> all = {
-      {"ellipsoidal", "Rb", false, "Möller, Leine & Glocker's ellipsoidal law",
-       [](double v) { return std::make_unique<friction::EllipsoidalLaw>(v); }},
-      {"mujoco-elliptic", "torsional", true, "MuJoCo (condim 4, elliptic cone)",
-       [](double v) { return std::make_unique<friction::MujocoEllipticLaw>(v); }},
-      {"decoupled", "r_spin", true, "Bullet, Chrono, Gazebo (torsional limit)",
-       [](double v) { return std::make_unique<friction::DecoupledLaw>(v); }},
+      {"ellipsoidal", "Rb", false, "Möller, Leine & Glocker's ellipsoidal law"},
+      {"mujoco-elliptic", "torsional", true, "MuJoCo (condim 4, elliptic cone)"},
+      {"decoupled", "r_spin", true, "Bullet, Chrono, Gazebo (torsional limit)"},
   };
   return all;
 }
@@ -39,7 +34,7 @@ std::string engine_spec(const EngineLaw& law, double c, double a, double k) {
 }
 
 std::unique_ptr<friction::FrictionLaw> make_engine_law(const EngineLaw& law, double c, double a, double k) {
-  return law.make(parameter_value(law, c, a, k));
+  return friction::make_law(engine_spec(law, c, a, k));
 }
 
 }  // namespace frictionlab::calibration

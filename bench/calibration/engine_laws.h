@@ -10,7 +10,6 @@
 // pure spin on a circular Hertz patch of radius a. The factor k of the last two is a fact of the
 // laws (MuJoCo's and the engines' torque limits are per unit normal force, not per kN).
 
-#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -25,8 +24,6 @@ struct EngineLaw {
   std::string key;          ///< the parameter of its spec, e.g. "torsional" (a length, m)
   bool per_unit_load = false;  ///< the parameter is c k a (a torque per N) rather than c a (per kN)
   std::string engines;      ///< where the law is used, for tables: "MuJoCo (condim 4, elliptic cone)"
-  /// The law with its parameter set to `value` (m), as its spec `name:key=value` denotes it.
-  std::function<std::unique_ptr<friction::FrictionLaw>(double value)> make;
 };
 
 /// The engine laws the study calibrates, in table order.
@@ -43,7 +40,7 @@ struct EngineLaw {
 /// round-trip number).
 [[nodiscard]] std::string engine_spec(const EngineLaw& law, double c, double a, double k);
 
-/// The law `engine_spec(law, c, a, k)` denotes.
+/// The law `engine_spec(law, c, a, k)` denotes, made by the registry (its spec() is that spec).
 [[nodiscard]] std::unique_ptr<friction::FrictionLaw> make_engine_law(const EngineLaw& law, double c, double a,
                                                                      double k);
 
