@@ -120,7 +120,7 @@ void write_forces_plot(const CalibrationResult& r, const fs::path& plots, const 
         gp << (first ? "" : ", \\\n     ") << "'calibration_forces.dat' index " << b << " using 1:" << 2 + row
            << " with lines lw " << (exact ? 3 : 2) << " dt " << (exact ? 1 : 1 + colour % 4) << " lc rgb '"
            << (exact ? std::string("black") : std::string(kColours[colour % 6])) << "' title "
-           << support::gnuplot_quoted(c.label);
+           << support::gnuplot_quoted(c.label) << " noenhanced";  // specs hold '_' (r_spin)
         if (!exact) ++colour;
         first = false;
       }
