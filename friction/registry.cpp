@@ -6,10 +6,11 @@
 #include <stdexcept>
 #include <utility>
 
-#include "friction/coulomb_decoupled_law.h"
+#include "friction/decoupled_law.h"
+#include "friction/ellipsoidal_law.h"
 #include "friction/exact_law.h"
 #include "friction/exact_reference_law.h"
-#include "friction/moller_ellipsoidal_law.h"
+#include "friction/mujoco_elliptic_law.h"
 #include "friction/pade_printed_law.h"
 #include "friction/pade_reconstructed_law.h"
 
@@ -69,8 +70,16 @@ class Registry {
     add(built_in([](const LawArguments&) { return std::make_unique<PadePrintedLaw>(PadeAlpha::major); }));
     add(built_in([](const LawArguments&) { return std::make_unique<PadePrintedLaw>(PadeAlpha::minor); }));
     add(built_in(plain<PadeReconstructedLaw>()));
-    add(built_in(plain<MollerEllipsoidalLaw>()));
-    add(built_in(plain<CoulombDecoupledLaw>()));
+    // The engines' spin-friction laws (docs/engines.md), each with its length parameter.
+    add(built_in([](const LawArguments& a) { return std::make_unique<EllipsoidalLaw>(a.number("Rb")); },
+                 EllipsoidalLaw::parameters()));
+    add(built_in([](const LawArguments& a) { return std::make_unique<MujocoEllipticLaw>(*a.number("torsional")); },
+                 MujocoEllipticLaw::parameters()));
+    add(built_in([](const LawArguments& a) { return std::make_unique<DecoupledLaw>(a.number("r_spin")); },
+                 DecoupledLaw::parameters()));
+    // Their Hertz-calibrated defaults under the names older scenarios, runs and docs use.
+    add(built_in([](const LawArguments&) { return std::make_unique<EllipsoidalLaw>(std::nullopt, "moller-ellipsoidal"); }));
+    add(built_in([](const LawArguments&) { return std::make_unique<DecoupledLaw>(std::nullopt, "coulomb-decoupled"); }));
   }
 
   // Throws std::invalid_argument if the name is taken.

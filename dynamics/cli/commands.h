@@ -11,5 +11,6 @@ void register_simulate_command(CLI::App& app);  // simulate_command.cpp
 void register_accuracy_command(CLI::App& app);  // accuracy_command.cpp
 void register_paper_command(CLI::App& app);     // paper_command.cpp
 void register_ensemble_command(CLI::App& app);  // ensemble_command.cpp
+void register_calibrate_command(CLI::App& app); // calibrate_command.cpp
 
 }  // namespace frictionlab::cli

@@ -151,7 +151,8 @@ TEST_P(LawSoundness, PureSlidingIsCoulomb) {
 
 TEST_P(LawSoundness, PureSpinHasNoNetForce) {
   // U = 0: the slip field is odd under rotation of the patch by pi, so the force vanishes; the
-  // moment opposes the spin and cannot exceed kN a.
+  // moment opposes the spin and, for a law that promises to be bounded, cannot exceed kN a (an
+  // engine's fixed torsional length does not know the patch: mujoco-elliptic).
   for (const auto& base : moderate_inputs(points(info(), 40, kSlowLawPoints), 3)) {
     ContactInput in = base;
     in.U = 0.0;
@@ -161,7 +162,9 @@ TEST_P(LawSoundness, PureSpinHasNoNetForce) {
     EXPECT_NEAR(f.F1, 0.0, promises().tolerance * kN);
     EXPECT_NEAR(f.F2, 0.0, promises().tolerance * kN);
     EXPECT_GT(f.M * in.Omega, 0.0);
-    EXPECT_LE(std::abs(f.M), kNa);
+    if (promises().bounded) {
+      EXPECT_LE(std::abs(f.M), kNa);
+    }
     if (promises().exact_pure_spin) {
       // (3/8) E(e) for Hertz pressure: scaled to the law's own pressure
       const double moment = test::pure_spin_moment(in.b / in.a) * promises().pure_spin_factor / (3.0 / 8.0);
