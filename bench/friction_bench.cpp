@@ -1,5 +1,5 @@
 // Cost of each friction law per evaluation, on one fixed seeded input set (bench/law_input_set.h),
-// with each law's largest error against `exact` on that set as counters.
+// with each law's largest error against the reference law (`exact`) on that set as counters.
 //
 //   build/bench/friction_bench                       # all laws
 //   build/bench/friction_bench --benchmark_filter='BM_law/(exact|pade-printed)$'
@@ -13,6 +13,7 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -23,25 +24,30 @@
 namespace frictionlab::bench {
 namespace {
 
-// exact-reference costs milliseconds per call: it is timed (and checked) on a prefix of the set.
-constexpr std::size_t kReferenceSubset = 64;
+// A law the registry marks slow (milliseconds per call) is timed, and checked, on a prefix of the set.
+constexpr std::size_t kSlowLawSubset = 64;
 
 struct MaxErrors {
   double F1 = 0.0, F2 = 0.0, M = 0.0;
 };
 
-// Largest |law - exact| over `set`, per kN (forces) and kNa (moment); +inf if any output is not
-// finite (e.g. the real pole of the printed F2).
-MaxErrors max_errors(const friction::FrictionLaw& law, const friction::FrictionLaw& exact,
+// Largest |law - reference| over `set`, per kN (forces) and kNa (moment); +inf if any output is not
+// finite or the law rejects the input (e.g. on a real pole of the printed F2).
+MaxErrors max_errors(const friction::FrictionLaw& law, const friction::FrictionLaw& reference,
                      const std::vector<friction::ContactInput>& set) {
   MaxErrors e;
   const auto worst = [](double& m, double x, double ref) {
     const double d = std::abs(x - ref);
     m = std::isfinite(x) ? std::max(m, d) : std::numeric_limits<double>::infinity();
   };
+  constexpr double inf = std::numeric_limits<double>::infinity();
   for (const auto& in : set) {
-    const auto f = law.evaluate(in);
-    const auto g = exact.evaluate(in);
+    friction::FrictionForces f{inf, inf, inf};
+    try {
+      f = law.evaluate(in);
+    } catch (const std::invalid_argument&) {
+    }
+    const auto g = reference.evaluate(in);
     const double kN = in.k * in.N;
     worst(e.F1, f.F1 / kN, g.F1 / kN);
     worst(e.F2, f.F2 / kN, g.F2 / kN);
@@ -50,19 +56,23 @@ MaxErrors max_errors(const friction::FrictionLaw& law, const friction::FrictionL
   return e;
 }
 
-void register_law(const std::string& name, const std::vector<friction::ContactInput>& full) {
-  const bool slow = name == "exact-reference";
+void register_law(const friction::LawInfo& info, const std::vector<friction::ContactInput>& full) {
+  const bool slow = info.slow;
   auto set = std::make_shared<std::vector<friction::ContactInput>>(
-      full.begin(), full.begin() + static_cast<std::ptrdiff_t>(slow ? kReferenceSubset : full.size()));
-  std::shared_ptr<friction::FrictionLaw> law = friction::make_law(name);
-  const auto exact = friction::make_law("exact");
-  const MaxErrors err = max_errors(*law, *exact, *set);
+      full.begin(), full.begin() + static_cast<std::ptrdiff_t>(slow ? kSlowLawSubset : full.size()));
+  std::shared_ptr<friction::FrictionLaw> law = friction::make_law(info.name);
+  const auto reference = friction::make_reference_law();
+  const MaxErrors err = max_errors(*law, *reference, *set);
+  const std::string name = info.name;
 
   auto* b = benchmark::RegisterBenchmark(("BM_law/" + name).c_str(), [law, set, err](benchmark::State& state) {
     std::size_t i = 0;
     const long long allocations_before = g_allocations.load();
     for (auto _ : state) {
-      benchmark::DoNotOptimize(law->evaluate((*set)[i]));
+      try {
+        benchmark::DoNotOptimize(law->evaluate((*set)[i]));
+      } catch (const std::invalid_argument&) {  // a pole of the printed law: not a cost to time
+      }
       if (++i == set->size()) i = 0;
     }
     const long long allocations = g_allocations.load() - allocations_before;
@@ -74,7 +84,7 @@ void register_law(const std::string& name, const std::vector<friction::ContactIn
     state.counters["max_err_F2"] = err.F2;
     state.counters["max_err_M"] = err.M;
   });
-  if (slow) b->Iterations(2 * kReferenceSubset);
+  if (slow) b->Iterations(2 * kSlowLawSubset);
 }
 
 }  // namespace
@@ -82,7 +92,7 @@ void register_law(const std::string& name, const std::vector<friction::ContactIn
 
 int main(int argc, char** argv) {
   const auto set = frictionlab::bench::law_input_set();
-  for (const auto& info : frictionlab::friction::list_laws()) frictionlab::bench::register_law(info.name, set);
+  for (const auto& info : frictionlab::friction::list_laws()) frictionlab::bench::register_law(info, set);
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
   benchmark::RunSpecifiedBenchmarks();

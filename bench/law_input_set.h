@@ -1,5 +1,5 @@
 #pragma once
-// The fixed, seeded set of contacts every friction benchmark evaluates (issue 4 §2):
+// The fixed, seeded set of contacts every friction benchmark evaluates (docs/benchmarks.md):
 // s = U/(a|Omega|) log-uniform in [1e-3, 1e3], mu uniform in [0.05, 1], psi uniform in [0, pi],
 // both signs of Omega, a = 1 m, N = 1 N, k = 1 (so errors read directly per kN and kNa).
 

@@ -1,8 +1,8 @@
 #pragma once
 // The rigid body: a convex profile of revolution (dynamics/profile.h), its mass, the position of
-// its centre of mass on the axis, and its central inertia J = diag(A, A, C) (model-notes §3).
+// its centre of mass on the axis, and its central inertia J = diag(A, A, C) (docs/model.md §5).
 // Mass properties default to the homogeneous solid (dynamics/mass_properties.h); each can be
-// overridden, which the paper's egg needs (model-notes §4: its printed centre of mass is not the
+// overridden, which the paper's egg needs (docs/model.md §6: its printed centre of mass is not the
 // centroid of the homogeneous solid).
 
 #include <array>

@@ -1,6 +1,6 @@
 #pragma once
 // Where a convex body of revolution touches the plane, and the shape of its Hertz patch
-// (docs/dynamics.md §2 has the derivation; model-notes §3).
+// (docs/dynamics.md §2 has the derivation; docs/model.md §5).
 //
 // With P(z) = chi(z)^2 (dynamics/profile.h), the outward normal of the surface x^2 + y^2 = P(z) is
 // (2x, 2y, -P') / s, s = sqrt(4P + P'^2). The contact point has outward normal -gamma, gamma the

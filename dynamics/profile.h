@@ -9,7 +9,7 @@
 //  * both roots are simple (P'(z_lo) > 0 > P'(z_hi)), so the poles are smooth and not conical;
 //  * the body is strictly convex: chi'' < 0, i.e. G(z) = 2 P P'' - P'^2 < 0 on [z_lo, z_hi]
 //    (chi'' = G / (4 P^(3/2)); at the poles G = -P'^2 < 0 automatically).
-// Presets: a sphere, a spheroid, and the egg of the paper's section 2 (model-notes §4).
+// Presets: a sphere, a spheroid, and the egg of the paper's section 2 (docs/model.md §6).
 
 #include <string>
 #include <vector>

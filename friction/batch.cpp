@@ -1,10 +1,21 @@
 #include "friction/batch.h"
 
+#include <stdlib.h>  // mkstemp
+#include <unistd.h>  // close, unlink
+
 #include <array>
 #include <cctype>
+#include <cerrno>
 #include <charconv>
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
 #include <istream>
+#include <limits>
+#include <optional>
 #include <ostream>
 #include <sstream>
 #include <stdexcept>
@@ -13,6 +24,7 @@ namespace frictionlab::friction {
 namespace {
 
 constexpr std::array<std::string_view, 7> kInputColumns = {"U", "Omega", "a", "b", "psi", "N", "k"};
+constexpr std::string_view kByteOrderMark = "\xEF\xBB\xBF";
 
 std::string_view trim(std::string_view s) {
   while (!s.empty() && std::isspace(static_cast<unsigned char>(s.front()))) s.remove_prefix(1);
@@ -22,30 +34,45 @@ std::string_view trim(std::string_view s) {
 
 std::string at_line(std::size_t line) { return "input line " + std::to_string(line) + ": "; }
 
-double parse_number(std::string_view field, std::size_t line, std::string_view column) {
+std::string number_text(double v) {
+  std::ostringstream out;
+  out.precision(17);
+  out << v;
+  return out.str();
+}
+
+// A bad row: its message names the column; the caller adds the line.
+struct RowError {
+  std::string message;
+};
+
+double parse_number(std::string_view field, std::string_view column) {
   const auto text = trim(field);
   double value = 0.0;
   const auto* first = text.data();
   const auto* last = text.data() + text.size();
-  if (!text.empty() && *first == '+') ++first;  // from_chars does not take a leading '+'
+  // from_chars does not take a leading '+' (nor, after it, a sign).
+  const bool plus = !text.empty() && *first == '+';
+  if (plus) ++first;
   const auto [ptr, ec] = std::from_chars(first, last, value);
-  if (text.empty() || ec != std::errc() || ptr != last) {
-    throw std::invalid_argument(at_line(line) + "column " + std::string(column) + " = '" +
-                                std::string(text) + "' is not a number");
+  const bool signed_twice = plus && first != last && *first == '-';
+  if (!text.empty() && ec == std::errc() && ptr == last && !signed_twice) return value;  // the common case
+  const std::string quoted = "column " + std::string(column) + " = '" + std::string(text) + "'";
+  if (!text.empty() && ptr == last && ec == std::errc::result_out_of_range && !signed_twice) {
+    // from_chars reports overflow and underflow to zero alike; strtod tells them apart.
+    const std::string copy(text);
+    const double approx = std::strtod(copy.c_str(), nullptr);
+    throw RowError{quoted + " is out of the range of a double (" +
+                   (std::isinf(approx) ? "magnitude above " + number_text(std::numeric_limits<double>::max())
+                                       : "nonzero, magnitude below " +
+                                             number_text(std::numeric_limits<double>::denorm_min())) +
+                   ")"};
   }
-  return value;
+  throw RowError{quoted + " is not a number"};
 }
 
-void append_double(std::string& out, double v) {
-  char buf[32];
-  const int n = std::snprintf(buf, sizeof buf, "%.17g", v);
-  out.append(buf, static_cast<std::size_t>(n));
-}
-
-}  // namespace
-
-std::vector<std::string_view> split_csv_line(std::string_view line) {
-  std::vector<std::string_view> fields;
+void split_into(std::string_view line, std::vector<std::string_view>& fields) {
+  fields.clear();
   std::size_t start = 0;
   bool quoted = false;
   for (std::size_t i = 0; i < line.size(); ++i) {
@@ -56,73 +83,210 @@ std::vector<std::string_view> split_csv_line(std::string_view line) {
     }
   }
   fields.push_back(line.substr(start));
+}
+
+void append_double(std::string& out, double v) {
+  char buf[32];
+  const int n = std::snprintf(buf, sizeof buf, "%.17g", v);
+  out.append(buf, static_cast<std::size_t>(n));
+}
+
+void append_forces(std::string& out, const FrictionForces& f) {
+  append_double(out, f.F1);
+  out += ',';
+  append_double(out, f.F2);
+  out += ',';
+  append_double(out, f.M);
+}
+
+[[noreturn]] void write_failed(int err) {
+  std::string msg = "cannot write the output";
+  if (err != 0) msg += std::string(": ") + std::strerror(err);
+  throw std::runtime_error(msg);
+}
+
+// Writes `text` to `out`; a failed write throws std::runtime_error (with errno's reason if the
+// stream's device set one).
+void write_checked(std::ostream& out, std::string_view text) {
+  errno = 0;
+  out.write(text.data(), static_cast<std::streamsize>(text.size()));
+  if (!out) write_failed(errno);
+}
+
+void flush_checked(std::ostream& out) {
+  errno = 0;
+  out.flush();
+  if (!out) write_failed(errno);
+}
+
+// An unnamed temporary file (created in the temporary directory and unlinked at once, so that
+// nothing is left behind whatever happens), written and then read back.
+class Spool {
+ public:
+  Spool() {
+    const std::filesystem::path dir = std::filesystem::temp_directory_path();
+    std::string name = (dir / "frictionlab-batch-XXXXXX").string();
+    const int fd = ::mkstemp(name.data());
+    if (fd < 0) {
+      throw std::runtime_error("cannot create a temporary file in " + dir.string() + ": " + std::strerror(errno));
+    }
+    file_.open(name, std::ios::in | std::ios::out | std::ios::trunc | std::ios::binary);
+    ::close(fd);
+    ::unlink(name.c_str());
+    if (!file_) throw std::runtime_error("cannot open the temporary file " + name);
+  }
+  std::ostream& stream() { return file_; }
+
+  // Copies everything written to `out`.
+  void copy_to(std::ostream& out) {
+    flush_checked(file_);
+    file_.seekg(0);
+    std::array<char, 1 << 16> buf{};
+    while (file_.read(buf.data(), buf.size()) || file_.gcount() > 0) {
+      write_checked(out, std::string_view(buf.data(), static_cast<std::size_t>(file_.gcount())));
+    }
+    if (file_.bad()) throw std::runtime_error("cannot read back the temporary file");
+  }
+
+ private:
+  std::fstream file_;
+};
+
+void check_read(const std::istream& in) {
+  if (in.bad()) throw std::runtime_error("cannot read the input");
+}
+
+}  // namespace
+
+std::vector<std::string_view> split_csv_line(std::string_view line) {
+  std::vector<std::string_view> fields;
+  split_into(line, fields);
   return fields;
+}
+
+OnError parse_on_error(std::string_view text) {
+  if (text == "stop") return OnError::stop;
+  if (text == "skip") return OnError::skip;
+  if (text == "nan") return OnError::nan;
+  throw std::invalid_argument("--on-error = '" + std::string(text) + "' is not a choice: use stop, skip or nan");
 }
 
 std::string format_forces(const FrictionForces& f) {
   std::string s;
-  append_double(s, f.F1);
-  s += ',';
-  append_double(s, f.F2);
-  s += ',';
-  append_double(s, f.M);
+  append_forces(s, f);
   return s;
 }
 
-std::size_t evaluate_csv(const FrictionLaw& law, std::istream& in, std::ostream& out) {
-  std::string header;
-  if (!std::getline(in, header)) throw std::invalid_argument("input is empty: expected a CSV header");
-  if (!header.empty() && header.back() == '\r') header.pop_back();
-  const auto names = split_csv_line(header);
+BatchSummary evaluate_csv(const std::vector<const FrictionLaw*>& laws, std::istream& in, std::ostream& out,
+                          const BatchOptions& options) {
+  if (laws.empty()) throw std::invalid_argument("no friction law given");
+  const bool law_column = laws.size() > 1;
 
+  // The header: the first line that is not blank, after an optional byte-order mark.
+  std::string header;
+  std::size_t number = 0;
+  bool found = false;
+  while (std::getline(in, header)) {
+    ++number;
+    if (number == 1 && std::string_view(header).substr(0, kByteOrderMark.size()) == kByteOrderMark) {
+      header.erase(0, kByteOrderMark.size());
+    }
+    if (!header.empty() && header.back() == '\r') header.pop_back();
+    if (!trim(header).empty()) {
+      found = true;
+      break;
+    }
+  }
+  check_read(in);
+  if (!found) throw std::invalid_argument("input is empty: expected a CSV header");
+  const std::size_t header_line = number;
+  const auto names = split_csv_line(header);
   std::array<std::size_t, kInputColumns.size()> column{};
   for (std::size_t c = 0; c < kInputColumns.size(); ++c) {
-    std::size_t found = names.size();
+    std::size_t found_at = names.size();
     for (std::size_t i = 0; i < names.size(); ++i) {
       if (trim(names[i]) != kInputColumns[c]) continue;
-      if (found != names.size()) {
-        throw std::invalid_argument(at_line(1) + "column " + std::string(kInputColumns[c]) +
+      if (found_at != names.size()) {
+        throw std::invalid_argument(at_line(header_line) + "column " + std::string(kInputColumns[c]) +
                                     " appears twice in the header");
       }
-      found = i;
+      found_at = i;
     }
-    if (found == names.size()) {
-      throw std::invalid_argument(at_line(1) + "the header lacks column " +
-                                  std::string(kInputColumns[c]) +
-                                  " (required: U,Omega,a,b,psi,N,k in any order)");
+    if (found_at == names.size()) {
+      throw std::invalid_argument(at_line(header_line) + "the header lacks column " +
+                                  std::string(kInputColumns[c]) + " (required: U,Omega,a,b,psi,N,k in any order)");
     }
-    column[c] = found;
+    column[c] = found_at;
   }
 
-  std::string table = header + ",F1,F2,M\n";  // written only once every row has succeeded
-  std::size_t rows = 0;
+  std::optional<Spool> spool;
+  if (options.on_error == OnError::stop) spool.emplace();
+  std::ostream& dest = spool ? spool->stream() : out;
+  write_checked(dest, header + (law_column ? ",law" : "") + ",F1,F2,M\n");
+
+  BatchSummary summary;
+  // Reused for every row: the loop allocates nothing once they have grown to the longest row.
   std::string line;
-  for (std::size_t number = 2; std::getline(in, line); ++number) {
+  std::string row;
+  std::vector<std::string_view> fields;
+  const auto bad_row = [&](std::size_t line_number, const std::string& reason, const FrictionLaw* law) {
+    if (options.on_error == OnError::stop) throw std::invalid_argument(at_line(line_number) + reason);
+    ++summary.bad;
+    if (options.on_bad_row) options.on_bad_row(line_number, reason);
+    if (options.on_error == OnError::skip) return;
+    for (const FrictionLaw* l : laws) {
+      if (law && l != law) continue;
+      row.assign(line);
+      if (law_column) (row += ',') += l->name();
+      row += ",nan,nan,nan\n";
+      write_checked(dest, row);
+      ++summary.written;
+    }
+  };
+  while (std::getline(in, line)) {
+    ++number;
     if (!line.empty() && line.back() == '\r') line.pop_back();
     if (trim(line).empty()) continue;
-    const auto fields = split_csv_line(line);
+    ++summary.rows;
+    split_into(line, fields);
     if (fields.size() != names.size()) {
-      throw std::invalid_argument(at_line(number) + "has " + std::to_string(fields.size()) +
-                                  " fields, the header has " + std::to_string(names.size()));
+      bad_row(number, "has " + std::to_string(fields.size()) + " fields, the header has " + std::to_string(names.size()),
+              nullptr);
+      continue;
     }
     std::array<double, kInputColumns.size()> v{};
-    for (std::size_t c = 0; c < v.size(); ++c) v[c] = parse_number(fields[column[c]], number, kInputColumns[c]);
-    const ContactInput input{v[0], v[1], v[2], v[3], v[4], v[5], v[6]};
-    FrictionForces forces;
     try {
-      forces = law.evaluate(input);
-    } catch (const std::invalid_argument& e) {
-      throw std::invalid_argument(at_line(number) + e.what());
+      for (std::size_t c = 0; c < v.size(); ++c) v[c] = parse_number(fields[column[c]], kInputColumns[c]);
+    } catch (const RowError& e) {
+      bad_row(number, e.message, nullptr);
+      continue;
     }
-    table += line;
-    table += ',';
-    table += format_forces(forces);
-    table += '\n';
-    ++rows;
+    const ContactInput input{v[0], v[1], v[2], v[3], v[4], v[5], v[6]};
+    for (const FrictionLaw* law : laws) {
+      FrictionForces forces;
+      try {
+        forces = law->evaluate(input);
+      } catch (const std::invalid_argument& e) {
+        bad_row(number, (law_column ? std::string(law->name()) + ": " : std::string()) + e.what(), law);
+        continue;
+      }
+      row.assign(line);
+      if (law_column) (row += ',') += law->name();
+      row += ',';
+      append_forces(row, forces);
+      row += '\n';
+      write_checked(dest, row);
+      ++summary.written;
+    }
   }
-  out << table;
-  out.flush();
-  return rows;
+  check_read(in);
+  if (spool) spool->copy_to(out);
+  flush_checked(out);
+  return summary;
+}
+
+std::size_t evaluate_csv(const FrictionLaw& law, std::istream& in, std::ostream& out) {
+  return evaluate_csv(std::vector<const FrictionLaw*>{&law}, in, out).rows;
 }
 
 }  // namespace frictionlab::friction

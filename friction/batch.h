@@ -1,10 +1,27 @@
 #pragma once
-// Batch evaluation of a friction law over a CSV table.
+// Batch evaluation of friction laws over a CSV table, streamed.
 //
-// Input: a header line naming at least the columns U, Omega, a, b, psi, N, k (SI units, any order;
-// other columns are passed through untouched), then one contact per line. Output: every input
-// column as it was, then F1, F2, M printed with 17 significant digits (lossless for doubles).
+// Input: optional blank lines and a UTF-8 byte-order mark, then a header line naming at least the
+// columns U, Omega, a, b, psi, N, k (SI units, any order; other columns are passed through
+// untouched), then one contact per line; blank lines are skipped. Numbers are C locale decimals
+// (a leading '+' allowed); one outside the double range ("1e999", "1e-400") is named as such.
+//
+// Output: every input column as it was, then (with more than one law) a `law` column, then F1, F2,
+// M printed with 17 significant digits (lossless for doubles). Rows come in input order; with
+// several laws, each input row gives one output row per law, in the order the laws are given.
+//
+// Streaming: rows are read, evaluated and written one at a time, so memory does not grow with the
+// table. With OnError::stop (the default) nothing reaches `out` unless every row succeeds: rows go
+// to an unnamed temporary file (in $TMPDIR, else /tmp), copied to `out` at the end. That evaluates
+// each row once, works alike for files and pipes, and keeps the promise for every failure (a bad
+// number, a law rejecting an input, a full disk); the price is disk space for one copy of the
+// output and no output before the end. With skip or nan rows go straight to `out`.
+//
+// Errors are one line, naming the input line number (1-based, blank lines counted) and the column:
+// std::invalid_argument for bad input, std::runtime_error for a failed read or write.
 
+#include <cstddef>
+#include <functional>
 #include <iosfwd>
 #include <string>
 #include <string_view>
@@ -17,10 +34,35 @@ namespace frictionlab::friction {
 /// Splits one CSV line into raw fields (double quotes protect commas; fields are kept verbatim).
 [[nodiscard]] std::vector<std::string_view> split_csv_line(std::string_view line);
 
-/// Evaluates `law` on every row of `in` and writes the table to `out`. Nothing is written unless
-/// every row is valid: a bad header, a bad number or an input the law rejects throws
-/// std::invalid_argument naming the line number (1 = header) and the column.
-/// Returns the number of rows evaluated.
+/// What a row that cannot be evaluated does (a bad number, the wrong number of fields, an input a
+/// law rejects; with several laws, per law).
+enum class OnError {
+  stop,  ///< the whole evaluation fails and nothing is written
+  skip,  ///< the row is left out of the output
+  nan,   ///< the row is written with F1, F2, M = nan
+};
+
+/// "stop", "skip" or "nan"; std::invalid_argument naming the value and the choices otherwise.
+[[nodiscard]] OnError parse_on_error(std::string_view text);
+
+struct BatchOptions {
+  OnError on_error = OnError::stop;
+  /// With skip or nan, called once per bad row with its line number and the reason (one line).
+  std::function<void(std::size_t line, const std::string& reason)> on_bad_row;
+};
+
+struct BatchSummary {
+  std::size_t rows = 0;      ///< input rows read (blank lines not counted)
+  std::size_t written = 0;   ///< output rows written, header not counted
+  std::size_t bad = 0;       ///< output rows skipped or written as nan
+};
+
+/// Evaluates every law of `laws` (at least one; a `law` column is added if there are several) on
+/// every row of `in`, streaming the table to `out` as described above.
+BatchSummary evaluate_csv(const std::vector<const FrictionLaw*>& laws, std::istream& in, std::ostream& out,
+                          const BatchOptions& options = {});
+
+/// One law, OnError::stop. Returns the number of rows evaluated.
 std::size_t evaluate_csv(const FrictionLaw& law, std::istream& in, std::ostream& out);
 
 /// "F1,F2,M" of one evaluation, each with 17 significant digits.

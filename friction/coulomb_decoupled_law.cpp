@@ -12,6 +12,21 @@ std::string_view CoulombDecoupledLaw::summary() const {
          "pure-spin torque)";
 }
 
+LawPromises CoulombDecoupledLaw::promises() const {
+  LawPromises p;
+  p.F1_in_Omega = Parity::even;
+  p.F2_in_Omega = Parity::even;  // F2 = 0
+  p.M_in_Omega = Parity::odd;
+  p.pi_periodic_in_psi = true;  // psi plays no part
+  p.psi_mirror = true;
+  p.dissipative = true;
+  p.bounded = true;
+  p.whole_domain = true;
+  p.exact_pure_spin = true;
+  p.tolerance = 1e-14;  // rounding of a closed form
+  return p;
+}
+
 FrictionForces CoulombDecoupledLaw::do_evaluate(const ContactInput& in) const {
   const double F0 = in.k * in.N;
   if (F0 == 0.0) return {};

@@ -19,15 +19,16 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <iomanip>
 #include <numbers>
+#include <sstream>
+#include <stdexcept>
 
 namespace frictionlab::friction {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-// Axis ratios below this are evaluated at this value (a slit); see the header.
-constexpr double kMinAxisRatio = 1e-12;
 // Above this slip ratio s the fast-slip expansion replaces quadrature: its first neglected terms
 // are O(s^-3) kNa in M and O(s^-4) kN in F1, F2 (measured: M s / (d3/5) = 1 + c/s^2 with
 // c ~ 0.1 to 0.3), i.e. below 1e-24 here.
@@ -37,8 +38,12 @@ constexpr double kFastSlipRatio = 1e8;
 // takes whichever interval keeps the integrand's singularities further away (fewer nodes);
 // beyond, always the window. The whole-period terms grow like rho^4 while the result is O(1):
 // the subtraction costs up to ~5e-14 at rho = 2 (2e-13 if this were raised to rho = 3, for 20%
-// fewer nodes in that band).
+// fewer nodes in that band). The moments also grow like ln(1/mu), so for slender patches the
+// subtraction is allowed only up to rho = 1.5: at rho = 2 it cost up to 1.3e-13 for mu < 1e-4
+// (measured against the window), at rho = 1.5 (1.5/2)^4 of that.
 constexpr double kMaxGapRho2 = 4.0;
+constexpr double kSlenderAxisRatio = 0.01;
+constexpr double kMaxGapRho2Slender = 2.25;
 // Moments of 1/L: AGM + upward recurrence for mu below this (the recurrence divides by
 // e^2 = 1 - mu^2 >= 0.75, so it loses at most a factor ~2), periodic trapezoid rule above
 // (its error ~ exp(-2 N atanh(mu)) < 1e-15 for N = 32, mu >= 0.5).
@@ -62,7 +67,7 @@ constexpr int kMaxSinglePanelRule = 24;
 // d * kGradeFirst * kGradeRatio^k (so every panel has rho_B >= (sqrt 4 + 1)/(sqrt 4 - 1) = 3).
 constexpr double kGradeFirst = 1.0;
 constexpr double kGradeRatio = 4.0;
-constexpr int kMaxPanelsPerSide = 40;  // 4^40 d > 1 for any d >= kMinAxisRatio / 4
+constexpr int kMaxPanelsPerSide = 40;  // 4^40 d > 1 for any d >= kExactMinAxisRatio / 4
 
 // ---------------------------------------------------------------------------------------------
 // Gauss-Legendre rules, built once (Newton on the three-term recurrence, in long double).
@@ -445,14 +450,22 @@ Result window_integral(double mu, double e2, double p, double q, double rho, dou
     const double C = cphi * u0x + sphi * nx;
     const double S = cphi * u0y + sphi * ny;
     const double L = std::sqrt(C * C + mu2 * S * S);
-    const double den = L * s - (C * p + S * qm);  // |v| |c'| (1 - d.c^) > 0
-    const double inv = 1.0 / (L * den);
+    // 1 + d.c^ (d = v/|v|, c^ = c'/|c'|) without cancellation: as (Ls + v.c')/(Ls) where
+    // v.c' > 0, else as (d x c^)^2/(1 - d.c^), using Lagrange's identity
+    // (Ls)^2 (d x c^)^2 = (v x c')^2 = mu^2 rho^2 sin^2 phi. (Ls - v.c' alone cancels to nothing
+    // where d is nearly along c^, which a slit (mu ~ 1e-9) sees at O(1) angles.)
+    const double Ls = L * s;
+    const double vc = C * p + S * qm;
+    const bool along = vc > 0.0;
+    const double num = along ? Ls + vc : mr2 * sphi * sphi;
+    const double den = along ? Ls : Ls * (Ls - vc);
+    const double inv = 1.0 / (L * den);  // one division per node
     const double iL = inv * den;
     const double D = 1.0 - rho2 * sphi * sphi;
     const double a = w * D * cphi * iL;
     g1 += a * C;
     g2 += a * mu * S;
-    const double one_plus = mr2 * sphi * sphi * inv / s;  // 1 + d.c^ = (d x c^)^2/(1 - d.c^)
+    const double one_plus = num * inv * L;
     h += w * one_plus * D * (s * rho * cphi + L * (rho2 * cphi * cphi + 0.25 * D));
   });
   return {0.75 * rho * g1, 0.75 * rho * g2, 0.75 * h};
@@ -460,7 +473,31 @@ Result window_integral(double mu, double e2, double p, double q, double rho, dou
 
 }  // namespace
 
+LawPromises ExactLaw::promises() const {
+  LawPromises p;
+  p.F1_in_Omega = Parity::even;
+  p.F2_in_Omega = Parity::even;
+  p.M_in_Omega = Parity::odd;
+  p.pi_periodic_in_psi = true;
+  p.psi_mirror = true;
+  p.dissipative = true;
+  p.bounded = true;
+  p.whole_domain = true;
+  p.exact_pure_spin = true;
+  p.min_axis_ratio = kExactMinAxisRatio;
+  p.tolerance = kExactLawAccuracy;
+  return p;
+}
+
 FrictionForces ExactLaw::do_evaluate(const ContactInput& in) const {
+  const double mu = in.b / in.a;
+  if (mu < kExactMinAxisRatio) {
+    std::ostringstream msg;
+    msg.precision(17);
+    msg << "friction input b = " << in.b << " is invalid for exact: the axis ratio b/a = " << mu << " is below "
+        << std::setprecision(3) << kExactMinAxisRatio << ", the smallest its quadrature is built for (a patch that slender is a line)";
+    throw std::invalid_argument(msg.str());
+  }
   const double kN = in.k * in.N;
   if (kN == 0.0) return {};
   if (in.Omega == 0.0) {
@@ -468,8 +505,7 @@ FrictionForces ExactLaw::do_evaluate(const ContactInput& in) const {
     return {kN, 0.0, 0.0};       // pure sliding
   }
   const double sign = in.Omega > 0.0 ? 1.0 : -1.0;
-  const double mu = std::max(in.b / in.a, kMinAxisRatio);
-  const double s = (in.U / in.a) / std::abs(in.Omega);  // may be +inf: fast-slip branch
+  const double s = slip_ratio(in.U, in.a, in.Omega);  // may be +inf: fast-slip branch
   // A circle is symmetric under rotation: psi = 0 makes F2 = 0 exact.
   const double psi = (mu == 1.0) ? 0.0 : in.psi;
   const double cpsi = std::cos(psi);
@@ -477,7 +513,7 @@ FrictionForces ExactLaw::do_evaluate(const ContactInput& in) const {
   const double e2 = (1.0 - mu) * (1.0 + mu);
 
   if (s > kFastSlipRatio) {
-    // Fast-slip expansion (model notes §1); d3, d4 are the pressure's second moments.
+    // Fast-slip expansion (docs/model.md); d3, d4 are the pressure's second moments.
     const double d3 = e2 * cpsi * cpsi + mu * mu;
     const double d4 = 2.0 * e2 * spsi * cpsi;
     const double is = 1.0 / s;
@@ -489,7 +525,7 @@ FrictionForces ExactLaw::do_evaluate(const ContactInput& in) const {
   const double q = s * cpsi / mu;
   const double rho2 = p * p + q * q;
   Result r;
-  bool use_window = rho2 > kMaxGapRho2;
+  bool use_window = rho2 > (mu < kSlenderAxisRatio ? kMaxGapRho2Slender : kMaxGapRho2);
   if (rho2 > 1.0 && !use_window) {
     const double rho = std::sqrt(rho2);
     const double e = std::sqrt(e2);

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <memory>
 #include <numbers>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -162,18 +163,46 @@ double integrate(Problem pb) {
 
 }  // namespace
 
+LawPromises ExactReferenceLaw::promises() const {
+  LawPromises p;
+  p.F1_in_Omega = Parity::even;
+  p.F2_in_Omega = Parity::even;
+  p.M_in_Omega = Parity::odd;
+  p.pi_periodic_in_psi = true;
+  p.psi_mirror = true;
+  p.dissipative = true;
+  p.bounded = true;
+  p.exact_pure_spin = true;
+  p.min_axis_ratio = kExactReferenceMinAxisRatio;
+  p.whole_domain = true;  // no GSL failure seen in its domain (1,600 seeded points)
+  p.tolerance = kExactReferenceAccuracy;
+  return p;
+}
+
 FrictionForces ExactReferenceLaw::do_evaluate(const ContactInput& in) const {
+  const double mu = in.b / in.a;
+  if (mu < kExactReferenceMinAxisRatio) {
+    std::ostringstream msg;
+    msg.precision(17);
+    msg << "friction input b = " << in.b << " is invalid for exact-reference: the axis ratio b/a = " << mu
+        << " is below " << kExactReferenceMinAxisRatio
+        << ", the smallest for which its GSL quadrature is accurate to " << kExactReferenceAccuracy
+        << " (use 'exact', accurate down to b/a = 1e-12)";
+    throw std::invalid_argument(msg.str());
+  }
   const double kN = in.k * in.N;
   if (kN == 0.0) return {};
   if (in.Omega == 0.0) {
     if (in.U == 0.0) return {};  // indeterminate at U = Omega = 0: documented as zero
     return {kN, 0.0, 0.0};       // pure sliding
   }
+  const double s = slip_ratio(in.U, in.a, in.Omega);
+  if (std::isinf(s)) return {kN, 0.0, 0.0};  // s > 1.8e308: pure sliding to within 1e-616
   use_gsl_status_codes();
   Problem pb;
-  pb.s = (in.U / in.a) / std::abs(in.Omega);
+  pb.s = s;
   pb.sigma = in.Omega > 0.0 ? 1.0 : -1.0;
-  pb.mu = in.b / in.a;
+  pb.mu = mu;
   pb.cpsi = std::cos(in.psi);
   pb.spsi = std::sin(in.psi);
   // ICR c = (0, sigma s) in the slip frame, c' = sigma s (sin psi, cos psi) in the ellipse frame.

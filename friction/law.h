@@ -1,8 +1,7 @@
 #pragma once
 // The interface every friction law of frictionlab implements.
 //
-// Conventions (docs/model.md): the contact patch is an
-// ellipse with semi-axes a >= b > 0 in the plane of contact, gamma the upward unit normal.
+// Conventions (docs/model.md): the contact patch is an ellipse with semi-axes a >= b > 0 in the plane of contact, gamma the upward unit normal.
 // e1 is the direction of the sliding velocity of the patch centre (speed U >= 0),
 // e2 = gamma x e1, Omega = omega . gamma the signed spin, psi the angle from e1 to the major axis,
 // counter-clockwise about gamma. The law returns F1, F2, M such that the friction force on the body
@@ -38,8 +37,43 @@ struct PoleDenominators {
   double F1, F2, M;
 };
 
-/// Throws std::invalid_argument naming the offending value and the rule it breaks.
+/// Throws std::invalid_argument naming the offending value and the rule it breaks. Beyond the
+/// per-field rules above, the scales every law needs must be doubles: the largest friction force
+/// k N and the largest moment k N a must not overflow, and the axis ratio b/a must be at least the
+/// smallest normal double (2.2e-308; a thinner patch is a line). k N may underflow: friction
+/// below the smallest double is returned as 0.
 void validate(const ContactInput& in);
+
+/// U / (length |Omega|) for validated inputs (U >= 0, length > 0, Omega != 0, all finite), with
+/// no spurious overflow or underflow of length |Omega|: at most two roundings whenever the result
+/// is a normal double, +inf only if it is above the double range, 0 or subnormal only if below.
+/// With length = a this is the slip ratio s on which every law depends.
+[[nodiscard]] double slip_ratio(double U, double length, double Omega);
+
+/// How an output behaves when the spin Omega changes sign (U, a, b, psi, N, k fixed).
+enum class Parity { none, even, odd };
+
+/// What a law guarantees at every valid input, to within `tolerance` (per kN for forces, per kNa
+/// for the moment). The exact law has every property (docs/model.md lists them); an approximate
+/// law declares those it keeps. tests/friction/law_soundness_test.cpp checks every promise of
+/// every registered law. Whatever it promises, every law returns finite values for every valid
+/// input or throws std::invalid_argument (input outside its own domain, e.g. on a pole), and
+/// satisfies the limits N = 0 (no friction), Omega = 0 (F1 = kN, F2 = M = 0) and U = 0
+/// (F1 = F2 = 0, M Omega > 0).
+struct LawPromises {
+  Parity F1_in_Omega = Parity::none;
+  Parity F2_in_Omega = Parity::none;
+  Parity M_in_Omega = Parity::none;
+  bool pi_periodic_in_psi = false;  ///< psi -> psi + pi changes nothing (the patch's symmetry)
+  bool psi_mirror = false;          ///< psi -> -psi flips the sign of F2 only
+  bool dissipative = false;         ///< F1 U + M Omega >= 0: friction never adds energy
+  bool bounded = false;             ///< F1^2 + F2^2 <= (kN)^2 and |M| <= kN a
+  bool exact_pure_spin = false;     ///< U = 0: M = (3/8) k N a E(e) sign(Omega), e^2 = 1 - mu^2
+  double min_axis_ratio = 0.0;      ///< b/a below this is rejected with std::invalid_argument
+  bool whole_domain = false;        ///< evaluates every input validate() accepts with
+                                    ///< b/a >= min_axis_ratio, never throwing
+  double tolerance = 0.0;           ///< per kN and kNa, to which the promises hold
+};
 
 /// A law of coupled dry friction. Implementations are `final`, stateless after construction,
 /// and safe to call concurrently from several threads.
@@ -58,6 +92,8 @@ class FrictionLaw {
   [[nodiscard]] virtual bool has_poles() const { return false; }
   /// The denominators at `in` (validated input with Omega != 0); all NaN for a law without poles.
   [[nodiscard]] virtual PoleDenominators pole_denominators(const ContactInput& in) const;
+  /// The properties the law guarantees (see LawPromises); none by default.
+  [[nodiscard]] virtual LawPromises promises() const { return {}; }
 
   /// Validates `in` (std::invalid_argument on bad input), then evaluates the law.
   [[nodiscard]] FrictionForces evaluate(const ContactInput& in) const {

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <sstream>
+#include <stdexcept>
 
 namespace frictionlab::friction {
 
@@ -11,9 +13,11 @@ PadePrintedCoefficients pade_printed_coefficients(double mu, double psi) {
   const double mu2 = mu * mu;
   const double mu_q = std::sqrt(std::sqrt(mu));  // mu^(1/4)
   const double mu_34 = mu_q * mu_q * mu_q;       // mu^(3/4)
+  // cos 2psi and sin 2psi from cos psi and sin psi: 2 psi itself may overflow.
   const double c = std::cos(psi);
-  const double c2 = std::cos(2.0 * psi);
-  const double s2 = std::sin(2.0 * psi);
+  const double s = std::sin(psi);
+  const double c2 = (c - s) * (c + s);
+  const double s2 = 2.0 * s * c;
   const double d3 = (1.0 - mu2) * c * c + mu2;   // Eq. (9), delta_3
   const double d4 = s2 * (1.0 - mu2);            // delta_4
   const double d5 = (1.0 - mu_q) * c2 + mu_q;    // delta_5
@@ -39,10 +43,23 @@ std::string_view PadePrintedLaw::summary() const {
              : "Pade formulas (8)-(9) of Munitsyna (2013) as printed, alpha = min(a, b)";
 }
 
+LawPromises PadePrintedLaw::promises() const {
+  LawPromises p;
+  p.F1_in_Omega = Parity::even;
+  p.F2_in_Omega = Parity::odd;
+  p.M_in_Omega = Parity::odd;
+  p.pi_periodic_in_psi = true;
+  p.min_axis_ratio = kPadePrintedMinAxisRatio;  // and not whole_domain: its poles throw
+  // Rounding, away from the poles: the coefficients reach ~mu^(-7/4) ~ 3e3 at mu = 0.01, and
+  // amplify the rounding of cos, sin of a shifted psi by as much.
+  p.tolerance = 1e-11;
+  return p;
+}
+
 PoleDenominators PadePrintedLaw::pole_denominators(const ContactInput& in) const {
   const double mu = in.b / in.a;
   const double c = alpha_ == PadeAlpha::major ? 1.0 : mu;
-  const double s = in.U / (in.a * std::abs(in.Omega));
+  const double s = slip_ratio(in.U, in.a, in.Omega);
   const auto k = pade_printed_coefficients(mu, in.psi);
   PoleDenominators d{};
   d.F1 = s * s + k.a1 * c * s + k.a2 * c * c;
@@ -52,28 +69,53 @@ PoleDenominators PadePrintedLaw::pole_denominators(const ContactInput& in) const
 }
 
 FrictionForces PadePrintedLaw::do_evaluate(const ContactInput& in) const {
+  const double mu = in.b / in.a;
+  if (mu < kPadePrintedMinAxisRatio) {
+    std::ostringstream msg;
+    msg.precision(17);
+    msg << "friction input b = " << in.b << " is invalid for " << name() << ": the axis ratio b/a = " << mu
+        << " is below " << kPadePrintedMinAxisRatio
+        << ", where the coefficients of eq. (9) (up to mu^(-7/4)) leave the double range";
+    throw std::invalid_argument(msg.str());
+  }
   const double F0 = in.k * in.N;
   if (F0 == 0.0 || (in.U == 0.0 && in.Omega == 0.0)) return {};
-  const double mu = in.b / in.a;
+  if (in.Omega == 0.0) return {F0, 0.0, 0.0};  // eq. (8) at Omega = 0: F1 = F0 U^2/U^2, F2 = M = 0
   const double alpha = alpha_ == PadeAlpha::major ? in.a : in.b;
   const auto c = pade_printed_coefficients(mu, in.psi);
-
-  const double U = in.U;
-  const double w = alpha * in.Omega;     // alpha Omega
-  const double aw = std::abs(w);         // alpha |Omega|
-  const double UU = U * U;
-  const double Uaw = U * aw;             // U alpha |Omega|
-  const double ww = w * w;               // alpha^2 Omega^2
-
-  FrictionForces out;
-  // Eq. (8), first line.
-  out.F1 = F0 * (UU + c.a1 * Uaw) / (UU + c.a1 * Uaw + c.a2 * ww);
-  // Eq. (8), second line; a4 infinite (d6 = 0) gives the limit F2 = 0.
-  // (+ 0.0 turns the -0 of Omega = 0 into +0.)
-  out.F2 = std::isinf(c.a4) ? 0.0 : -F0 * U * w / (UU + c.a3 * Uaw + c.a4 * ww) + 0.0;
-  // Eq. (8), third line.
+  const double sign = in.Omega > 0.0 ? 1.0 : -1.0;
   const double M0 = c.m0_over_alpha_f0 * alpha * F0;
-  out.M = M0 * (c.b1 * U * w + w * aw) / (c.b2 * UU + c.b1 * Uaw + ww);
+
+  // Eq. (8) divided by (alpha Omega)^2 where sigma = U/(alpha|Omega|) <= 1, by U^2 where it is
+  // larger (then in t = 1/sigma): the same rational functions, with no power of U or alpha Omega
+  // formed, so nothing overflows before the division. a4 infinite (d6 = 0) gives the limit F2 = 0.
+  // (+ 0.0 turns a -0 of F2 at U = 0 into +0.)
+  const double sigma = slip_ratio(in.U, alpha, in.Omega);
+  FrictionForces out;
+  if (sigma <= 1.0) {
+    const double n1 = sigma * (sigma + c.a1);
+    out.F1 = F0 * n1 / (n1 + c.a2);                                                  // Eq. (8), F1
+    out.F2 = std::isinf(c.a4) ? 0.0 : -F0 * sign * sigma / (sigma * (sigma + c.a3) + c.a4) + 0.0;  // F2
+    out.M = M0 * sign * (c.b1 * sigma + 1.0) / (sigma * (c.b2 * sigma + c.b1) + 1.0);  // Eq. (8), M
+  } else {
+    const double t = 1.0 / sigma;
+    const double n1 = 1.0 + c.a1 * t;
+    out.F1 = F0 * n1 / (n1 + c.a2 * t * t);
+    out.F2 = std::isinf(c.a4) ? 0.0 : -F0 * sign * t / (1.0 + t * (c.a3 + c.a4 * t));
+    out.M = M0 * sign * t * (c.b1 + t) / (c.b2 + t * (c.b1 + t));
+  }
+  // A denominator of eq. (8) that vanishes (or so nearly that the quotient leaves the double
+  // range) is a pole: the printed law has no value there.
+  const char* pole = !std::isfinite(out.F1) ? "F1" : !std::isfinite(out.F2) ? "F2" : !std::isfinite(out.M) ? "M" : nullptr;
+  if (pole) {
+    std::ostringstream msg;
+    msg.precision(17);
+    msg << name() << " is undefined at U = " << in.U << " m/s, Omega = " << in.Omega << " 1/s, a = " << in.a
+        << " m, b = " << in.b << " m, psi = " << in.psi << ": the denominator of " << pole
+        << " in eq. (8) vanishes there (a pole; " << pole << " = "
+        << (pole[0] == 'M' ? out.M : pole[1] == '1' ? out.F1 : out.F2) << ")";
+    throw std::invalid_argument(msg.str());
+  }
   return out;
 }
 

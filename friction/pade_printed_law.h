@@ -4,7 +4,7 @@
 // Provenance: M.A. Munitsyna, "Dynamics of a body of revolution on a horizontal plane within the
 // interconnected model of friction" (2013), eqs. (8)-(9) (received 20.11.2012; Russian; docs/model.md cites it), an approximation
 // of the exact law over the elliptic Hertz patch by the same author (2012). With F0 = kN,
-// alpha = a (the major semi-axis; the text also says min{a, b}: see pade-printed-minor, issue 4),
+// alpha = a (the major semi-axis; the text also says min{a, b}: see pade-printed-minor),
 // mu = b/a, s-terms written in U and alpha|Omega|:
 //
 //   Eq. (8)  F1 = F0 (U^2 + a1 U alpha|Omega|) / (U^2 + a1 U alpha|Omega| + a2 alpha^2 Omega^2)
@@ -27,13 +27,21 @@
 //   * U = 0 and Omega = 0 (every ratio is 0/0): F1 = F2 = M = 0, as the exact law does at rest;
 //   * d6 = 0 (sin 2psi = 0 or a circle): a4 is infinite and F2 = 0, its limit for d6 -> 0;
 //   * N = 0 or k = 0: everything is 0.
-// At the real pole of F2 (or of any denominator that the printed signs let vanish) the value is
-// whatever IEEE division gives (±inf, or NaN for 0/0): callers must check finiteness.
+// Where it has no value it throws std::invalid_argument naming the input and the rule:
+//   * on a real pole (a denominator of eq. (8) that vanishes, or so nearly that the quotient
+//     leaves the double range); near one the values are finite and as large as the formula says;
+//   * for b/a < kPadePrintedMinAxisRatio, where the coefficients leave the double range.
+// Evaluated in sigma = U/(alpha|Omega|) or 1/sigma (the same rational functions), so no power of U
+// or alpha Omega can overflow.
 // Valid range: none is stated in the paper; see docs/accuracy.md for the measured errors.
 
 #include "friction/law.h"
 
 namespace frictionlab::friction {
+
+/// The smallest axis ratio b/a the printed law is evaluated for: its coefficients grow like
+/// mu^(-7/4) (1e262 here) and leave the double range near mu = 1e-176.
+inline constexpr double kPadePrintedMinAxisRatio = 1e-150;
 
 /// Which semi-axis the printed formulas call alpha.
 enum class PadeAlpha {
@@ -56,6 +64,10 @@ class PadePrintedLaw final : public FrictionLaw {
   explicit PadePrintedLaw(PadeAlpha alpha = PadeAlpha::major) : alpha_(alpha) {}
   [[nodiscard]] std::string_view name() const override;
   [[nodiscard]] std::string_view summary() const override;
+  /// F1 even, F2 odd (the exact F2 is even), M odd in Omega; pi-periodic in psi. Not mirror
+  /// symmetric (a3 and a4 change sign with psi, so F2(-psi) != -F2(psi)), not dissipative
+  /// (b1 < 0 gives M the wrong sign at large slip), not bounded (poles).
+  [[nodiscard]] LawPromises promises() const override;
   /// The printed signs let the F2 denominator of eq. (8) vanish (a4 < 0), and the M denominator
   /// for small mu: both are watched.
   [[nodiscard]] bool has_poles() const override { return true; }

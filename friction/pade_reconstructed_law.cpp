@@ -67,25 +67,39 @@ std::string_view PadeReconstructedLaw::summary() const {
          "limits; F2 even, no pole";
 }
 
+LawPromises PadeReconstructedLaw::promises() const {
+  LawPromises p;
+  p.F1_in_Omega = Parity::even;
+  p.F2_in_Omega = Parity::even;
+  p.M_in_Omega = Parity::odd;
+  p.pi_periodic_in_psi = true;
+  p.psi_mirror = true;
+  p.dissipative = true;
+  p.whole_domain = true;
+  p.exact_pure_spin = true;
+  p.tolerance = 1e-13;  // rounding of closed forms
+  return p;
+}
+
 FrictionForces PadeReconstructedLaw::do_evaluate(const ContactInput& in) const {
   const double F0 = in.k * in.N;
   if (F0 == 0.0 || (in.U == 0.0 && in.Omega == 0.0)) return {};
   const double mu = in.b / in.a;
   const auto c = pade_reconstructed_coefficients(mu, in.psi);
+  if (in.Omega == 0.0) return {F0, 0.0, 0.0};  // pure sliding: the fast side at t = 0
   const double M0 = c.m0_over_alpha_f0 * in.a * F0;
-  const double w = in.a * std::abs(in.Omega);  // alpha |Omega|, m/s
-  const double sign = in.Omega > 0.0 ? 1.0 : (in.Omega < 0.0 ? -1.0 : 0.0);
+  const double sign = in.Omega > 0.0 ? 1.0 : -1.0;
+  const double s = slip_ratio(in.U, in.a, in.Omega);  // U/(alpha|Omega|), alpha = a
 
   FrictionForces out;
-  if (in.U < w) {
-    // Slow side: s = U/(alpha|Omega|) in [0, 1). Every denominator is >= its constant term > 0.
-    const double s = in.U / w;
+  if (s < 1.0) {
+    // Slow side: s in [0, 1). Every denominator is >= its constant term > 0.
     out.F1 = F0 * (s * (s + c.a1)) / (s * (s + c.a1) + c.a2);
     out.F2 = F0 * c.a3 * s / (s * s * s + c.a4);
     out.M = sign * M0 * (1.0 + c.b1 * s) / (1.0 + s * (c.b1 + c.b2 * s));
   } else {
-    // Fast side: t = alpha|Omega|/U in [0, 1] (U > 0 here). The same rational functions in 1/s.
-    const double t = w / in.U;
+    // Fast side: t = alpha|Omega|/U in [0, 1]. The same rational functions in 1/s.
+    const double t = 1.0 / s;
     out.F1 = F0 * (1.0 + c.a1 * t) / (1.0 + t * (c.a1 + c.a2 * t));
     out.F2 = F0 * c.a3 * t * t / (1.0 + c.a4 * t * t * t);
     out.M = sign * M0 * t * (t + c.b1) / (c.b2 + t * (c.b1 + t));

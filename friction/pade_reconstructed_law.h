@@ -3,7 +3,7 @@
 // law: the printed forms (8), coefficients matched at slow and at fast slip, one form changed.
 //
 // Provenance: the forms are those of M.A. Munitsyna (2013), eq. (8) (see pade_printed_law.h); the
-// coefficients are ours, matched to the exact law over the elliptic Hertz patch (model-notes §1).
+// coefficients are ours, matched to the exact law over the elliptic Hertz patch (docs/model.md).
 // Derivation, and which printed coefficients survive: docs/pade-reconstruction.md.
 //
 // With F0 = kN, alpha = a (the major semi-axis), mu = b/a, s = U/(a|Omega|), k^2 = 1 - mu^2,
@@ -35,10 +35,13 @@
 // Properties (tested in tests/friction/pade_reconstructed_law_test.cpp): every coefficient is
 // positive (a3 has the sign of sin 2psi), so no denominator vanishes for U >= 0, any mu in (0, 1],
 // any psi; F1, F2 even and M odd in Omega; pi-periodic in psi; F2 = 0 for a circle and for
-// sin 2psi = 0; 0 <= F1 < F0, |M| <= M0; dissipative (F1 U + M Omega >= 0).
+// sin 2psi = 0; 0 <= F1 < F0, |M| <= M0; dissipative (F1 U + M Omega >= 0). Not bounded by kN
+// in |F|: sqrt(F1^2 + F2^2) <= F0 holds for mu >= 1.2e-3 (on s = 1e-3..1e3, psi = 0..90 deg),
+// and exceeds it below (1.006 F0 at mu = 1e-3, s = 0.28, psi = 46 deg).
 // Limits: U = Omega = 0: all zero (rest). Omega = 0: F1 = F0, F2 = M = 0.
 // U = 0: F1 = F2 = 0, M = M0 sign(Omega).
-// Evaluated in s when U < a|Omega| and in 1/s otherwise, so no power of U or Omega can overflow.
+// Evaluated in s when s < 1 and in 1/s otherwise (s from slip_ratio(), law.h), so no power of U or
+// Omega can overflow.
 // K, E and C come from one arithmetic-geometric mean (Gauss; DLMF 19.8.1, 19.8.2), with the sums
 // arranged so that B and C carry no cancellation near the circle: relative error ~1e-15 for every
 // mu in (0, 1] (checked against Boost's Carlson and Legendre integrals in the tests). Cost: ~43 ns
@@ -82,6 +85,7 @@ class PadeReconstructedLaw final : public FrictionLaw {
  public:
   [[nodiscard]] std::string_view name() const override;
   [[nodiscard]] std::string_view summary() const override;
+  [[nodiscard]] LawPromises promises() const override;
 
  private:
   [[nodiscard]] FrictionForces do_evaluate(const ContactInput& in) const override;

@@ -1,7 +1,7 @@
 #pragma once
 // Physical consistency checks of a law on the grid: dissipation and the signs of its outputs.
 //
-// Dissipation (model-notes §1): the power of friction F1 U + M Omega is >= 0 for the exact law
+// Dissipation (docs/model.md §2): the power of friction F1 U + M Omega is >= 0 for the exact law
 // (it is the integral of k p |v| over the patch), so a law with F1 U + M Omega < 0 at some contact
 // feeds energy into the motion there. On the grid (a = 1, |Omega| = 1, kN = 1) the power per
 // kN a|Omega| is F1 s + M sign(Omega).
@@ -17,8 +17,8 @@
 
 namespace frictionlab::accuracy {
 
-/// |reference| above which the sign of a law's F2 (or M) is checked: 1e-9 kN is ten times the
-/// exact law's accuracy target (1e-10), so the reference's sign is certain there.
+/// |reference| above which the sign of a law's F2 (or M) is checked: 1e-9 kN is ten thousand times
+/// the exact law's accuracy (1e-13), so the reference's sign is certain there.
 inline constexpr double kSignThreshold = 1e-9;
 
 /// Power of friction per (kN a|Omega|): F1 s + M sign, for F1 per kN, M per kNa, s = U/(a|Omega|).

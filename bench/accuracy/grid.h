@@ -2,7 +2,7 @@
 // The grid of the accuracy study: dimensionless contacts (s, mu, psi, sign Omega).
 //
 // Every law's F1/(kN), F2/(kN), M/(kNa) depends only on s = U/(a|Omega|), mu = b/a, psi and
-// sign(Omega) (model-notes §1, "scaling"), so the study evaluates the laws at a = 1 m, b = mu m,
+// sign(Omega) (docs/model.md §1, scaling), so the study evaluates the laws at a = 1 m, b = mu m,
 // |Omega| = 1 1/s, U = s m/s, N = 1 N, k = 1: then F1, F2 are in units of kN and M of kNa, and
 // the power of friction F1 U + M Omega is in units of kN a|Omega|.
 //
@@ -21,7 +21,7 @@
 
 namespace frictionlab::accuracy {
 
-/// The sizes and ranges of the grid. The defaults are the study's (issue 4, §4).
+/// The sizes and ranges of the grid. The defaults are those of the study in docs/accuracy.md.
 struct GridSpec {
   std::size_t s_points = 200;   ///< number of slip ratios, >= 2
   std::size_t mu_points = 20;   ///< number of axis ratios, >= 2 (mu_min and 1 are nodes)

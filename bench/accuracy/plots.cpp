@@ -212,9 +212,9 @@ void write_singular(const StudyResult& study, const LawValues& law, const LawSum
 
 void write_curves(const StudyResult& study, const CurveCase& cc, const fs::path& plots,
                   const std::string& terminal, std::vector<fs::path>& scripts) {
-  std::vector<std::string> names = {kReferenceLaw};
+  std::vector<std::string> names = {study.reference.law};
   for (const auto& v : study.values) {
-    if (v.law != kReferenceLaw) names.push_back(v.law);
+    if (v.law != study.reference.law) names.push_back(v.law);
   }
   std::vector<std::unique_ptr<friction::FrictionLaw>> laws;
   for (const auto& n : names) laws.push_back(friction::make_law(n));

@@ -1,28 +1,12 @@
 #include "bench/accuracy/singularity.h"
 
 #include <cmath>
-#include <limits>
+#include <memory>
 
-#include "friction/pade_printed_law.h"
+#include "friction/registry.h"
 
 namespace frictionlab::accuracy {
 namespace {
-
-// Eq. (8) with U = s a|Omega| and alpha = c a, divided by a^2 Omega^2:
-//   F1: s^2 + a1 c s + a2 c^2,   F2: s^2 + a3 c s + a4 c^2,   M: b2 s^2 + b1 c s + c^2.
-// c = 1 for alpha = a (pade-printed), c = mu for alpha = b (pade-printed-minor).
-DenominatorFunction pade_printed_denominators(bool minor) {
-  return [minor](double s, double mu, double psi) {
-    const auto k = friction::pade_printed_coefficients(mu, psi);
-    const double c = minor ? mu : 1.0;
-    Denominators d{};
-    d.F1 = s * s + k.a1 * c * s + k.a2 * c * c;
-    d.F2 = std::isinf(k.a4) ? std::numeric_limits<double>::quiet_NaN()
-                            : s * s + k.a3 * c * s + k.a4 * c * c;
-    d.M = k.b2 * s * s + k.b1 * c * s + c * c;
-    return d;
-  };
-}
 
 constexpr Component kComponents[] = {Component::F1, Component::F2, Component::M};
 
@@ -43,9 +27,12 @@ std::string_view component_name(Component c) {
 }
 
 std::optional<DenominatorFunction> known_denominators(std::string_view law) {
-  if (law == "pade-printed") return pade_printed_denominators(false);
-  if (law == "pade-printed-minor") return pade_printed_denominators(true);
-  return std::nullopt;
+  std::shared_ptr<const friction::FrictionLaw> made = friction::make_law(law);
+  if (!made->has_poles()) return std::nullopt;
+  return [made](double s, double mu, double psi) {
+    const friction::PoleDenominators d = made->pole_denominators(to_contact({s, mu, psi, 1}));
+    return Denominators{d.F1, d.F2, d.M};
+  };
 }
 
 std::vector<PoleBracket> pole_brackets(const Grid& grid, const DenominatorFunction& den) {

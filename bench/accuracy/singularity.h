@@ -4,12 +4,12 @@
 // Two detectors, both reported per point and per (mu, psi):
 // * generic, for every law: a point is singular if an output is NaN or +-inf, or larger in size
 //   than kSingularMagnitude (in kN or kNa), far beyond anything the exact law gives;
-// * structural, for rational laws whose denominators the study knows (the printed Padé law, both
-//   readings of alpha, eq. (8)): the sign of each denominator at every node, and the grid
-//   intervals of s where it changes sign, which bracket a real pole. The magnitude test alone
-//   misses a pole at large s: there the printed F2 ~ 1/(2 (s - s_pole)) stays below 10 at every
-//   node of a 200-point grid once s_pole exceeds ~3.
-// The denominators of the laws known here depend on |Omega| only, not on its sign.
+// * structural, for laws that declare poles (FrictionLaw::has_poles() and pole_denominators(); the
+//   printed Padé law, both readings of alpha, declares the denominators of eq. (8)): the sign of
+//   each denominator at every node, and the grid intervals of s where it changes sign, which
+//   bracket a real pole. The magnitude test alone misses a pole at large s: there the printed
+//   F2 ~ 1/(2 (s - s_pole)) stays below 10 at every node of a 200-point grid once s_pole exceeds ~3.
+// The denominators are taken at Omega > 0 (those of the printed law depend on |Omega| only).
 
 #include <cstddef>
 #include <cstdint>
@@ -45,8 +45,9 @@ struct Denominators {
 };
 using DenominatorFunction = std::function<Denominators(double s, double mu, double psi)>;
 
-/// The denominators of the law called `law`, if the study knows them ("pade-printed",
-/// "pade-printed-minor"); std::nullopt otherwise.
+/// The denominators the law called `law` declares (FrictionLaw::pole_denominators(), at a = 1,
+/// b = mu, U = s, Omega = 1), if it has poles; std::nullopt if it has none. Throws
+/// std::invalid_argument for an unknown name.
 [[nodiscard]] std::optional<DenominatorFunction> known_denominators(std::string_view law);
 
 /// One grid interval of s, at fixed (mu, psi), across which a denominator changes sign.

@@ -11,10 +11,6 @@
 namespace frictionlab::accuracy {
 namespace {
 
-bool is_slow(const std::string& law) {
-  return std::find(kSlowLaws.begin(), kSlowLaws.end(), law) != kSlowLaws.end();
-}
-
 double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
@@ -24,19 +20,19 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
 std::vector<std::string> default_laws() {
   std::vector<std::string> out;
   for (const auto& info : friction::list_laws()) {
-    if (info.name != kReferenceLaw && !is_slow(info.name)) out.push_back(info.name);
+    if (!info.reference && !info.slow) out.push_back(info.name);
   }
   return out;
 }
 
 void check_laws(const std::vector<std::string>& laws, const Grid& grid) {
   for (std::size_t i = 0; i < laws.size(); ++i) {
-    (void)friction::make_law(laws[i]);  // throws, listing the known names, if unknown
+    const friction::LawInfo info = friction::law_info(laws[i]);  // throws, listing the known names
     if (std::find(laws.begin(), laws.begin() + static_cast<std::ptrdiff_t>(i), laws[i]) !=
         laws.begin() + static_cast<std::ptrdiff_t>(i)) {
       throw std::invalid_argument("law '" + laws[i] + "' is listed twice: list each law once");
     }
-    if (is_slow(laws[i]) && grid.size() > kSlowLawMaxPoints) {
+    if (info.slow && grid.size() > kSlowLawMaxPoints) {
       throw std::invalid_argument(
           "law '" + laws[i] + "' is too slow for a grid of " + std::to_string(grid.size()) +
           " points: use at most " + std::to_string(kSlowLawMaxPoints) +
@@ -99,22 +95,22 @@ StudyResult run_study(const StudyOptions& options) {
   const std::vector<std::string> laws = options.laws.empty() ? default_laws() : options.laws;
   check_laws(laws, grid);
   std::ostream* log = options.progress;
+  const std::string reference_name = friction::reference_law_name();
 
   if (log) {
     *log << "accuracy: grid " << grid.s().size() << " s x " << grid.mu().size() << " mu x "
          << grid.psi().size() << " psi x 2 signs = " << grid.size() << " points; "
-         << laws.size() << " laws against '" << kReferenceLaw << "'" << std::endl;
+         << laws.size() << " laws against '" << reference_name << "'" << std::endl;
   }
   auto t0 = std::chrono::steady_clock::now();
-  const auto reference = friction::make_law(kReferenceLaw);
+  const auto reference = friction::make_reference_law();
   result.reference = evaluate_on_grid(*reference, grid, options.threads);
   result.reference_seconds = seconds_since(t0);
   if (log) {
-    *log << "accuracy: " << kReferenceLaw << " (reference): " << result.reference_seconds << " s"
+    *log << "accuracy: " << reference_name << " (reference): " << result.reference_seconds << " s"
          << std::endl;
   }
 
-  const auto infos = friction::list_laws();
   result.regions = study_regions(grid);
   std::vector<std::size_t> all(grid.size());
   for (std::size_t i = 0; i < all.size(); ++i) all[i] = i;
@@ -130,9 +126,8 @@ StudyResult run_study(const StudyOptions& options) {
     LawSummary sum;
     sum.seconds = seconds_since(t0);
     sum.law = name;
-    for (const auto& info : infos) {
-      if (info.name == name) sum.description = info.summary;
-    }
+    const friction::LawInfo info = friction::law_info(name);
+    sum.description = info.summary;
     sum.overall = summarize(grid, values, result.reference, all);
     for (const auto& slice : slices) {
       sum.by_mu.push_back(summarize(grid, values, result.reference, slice));
@@ -140,9 +135,9 @@ StudyResult run_study(const StudyOptions& options) {
     for (const auto& region : result.regions) {
       sum.by_region.push_back(summarize(grid, values, result.reference, region.indices));
     }
-    if (const auto den = known_denominators(name)) {
+    if (info.has_poles) {
       sum.has_denominators = true;
-      sum.poles = pole_brackets(grid, *den);
+      sum.poles = pole_brackets(grid, *known_denominators(name));
     }
     if (log) {
       *log << "accuracy: " << name << ": " << sum.seconds << " s; max |error| F1 "

@@ -1,10 +1,11 @@
 #pragma once
-// The accuracy study of issue 4 §4: every law against the exact one on the study grid.
+// The accuracy study: every law against the exact one on the study grid.
 //
-// run_study() evaluates the reference law ("exact") and each law at every grid point (in parallel
-// over mu), then summarises each law overall and per mu slice: error statistics of F1/(kN),
-// F2/(kN), M/(kNa), sign checks, dissipation, singular points and (for rational laws whose
-// denominators are known) pole brackets. Writing the results is report.h's and plots.h's job.
+// run_study() evaluates the registry's reference law (friction::reference_law_name(), "exact") and
+// each law at every grid point (in parallel over mu), then summarises each law overall and per mu
+// slice: error statistics of F1/(kN), F2/(kN), M/(kNa), sign checks, dissipation, singular points
+// and (for laws that declare poles) pole brackets. Writing the results is report.h's and plots.h's
+// job.
 
 #include <array>
 #include <cstddef>
@@ -20,13 +21,9 @@
 
 namespace frictionlab::accuracy {
 
-/// The reference every law is compared with.
-inline constexpr const char* kReferenceLaw = "exact";
-
-/// Laws too slow for the default grid: the study runs them only by name, on at most
-/// kSlowLawMaxPoints points. exact-reference is an adaptive 2-D GSL quadrature meant to cross-check
-/// `exact`: ~10-30 ms per call here, so 5000 points take about a minute on two cores.
-inline constexpr std::array<const char*, 1> kSlowLaws = {"exact-reference"};
+/// Laws the registry marks slow (friction::LawInfo::slow, e.g. the 2-D GSL cross-check of `exact`,
+/// ~10-30 ms per call) are run only by name, on at most this many points (about a minute on two
+/// cores).
 inline constexpr std::size_t kSlowLawMaxPoints = 5000;
 
 struct StudyOptions {
@@ -36,7 +33,7 @@ struct StudyOptions {
   std::ostream* progress = nullptr;  ///< one line per evaluated law, if given
 };
 
-/// Every registered law except the reference and the slow ones, in registry order.
+/// Every registered law except the reference and the slow ones (registry facts), in registry order.
 [[nodiscard]] std::vector<std::string> default_laws();
 
 /// Checks the law names (std::invalid_argument naming an unknown law, a repeated one, or a slow
@@ -77,14 +74,14 @@ struct LawSummary {
   ScopeSummary overall;
   std::vector<ScopeSummary> by_mu;  ///< one per grid mu
   std::vector<ScopeSummary> by_region;  ///< one per study_regions() entry
-  bool has_denominators = false;    ///< known_denominators(law) exists
+  bool has_denominators = false;    ///< the law declares poles (known_denominators(law) exists)
   std::vector<PoleBracket> poles;   ///< sign changes of its denominators on the grid
   double seconds = 0.0;             ///< wall time of its evaluation on the grid
 };
 
 struct StudyResult {
   Grid grid;
-  LawValues reference;
+  LawValues reference;                ///< the reference law's values; reference.law is its name
   double reference_seconds = 0.0;
   std::vector<Region> regions;        ///< study_regions(grid)
   std::vector<LawValues> values;      ///< one per law, in the order of the options

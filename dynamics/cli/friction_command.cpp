@@ -1,10 +1,19 @@
-// `frictionlab friction`: evaluate one law at one contact, or over a CSV table read from stdin.
+// `frictionlab friction`: evaluate one or more laws at one contact, or over a CSV table read from a
+// file or from stdin (friction/batch.h: streamed; several laws add a `law` column; --on-error).
+
+#include <unistd.h>
 
 #include <array>
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
 #include <iostream>
+#include <memory>
 #include <optional>
 #include <stdexcept>
-#include <unistd.h>
+#include <string>
+#include <vector>
 
 #include "dynamics/cli/commands.h"
 #include "friction/batch.h"
@@ -14,8 +23,11 @@ namespace frictionlab::cli {
 namespace {
 
 struct FrictionOptions {
-  std::string law = "exact";
+  std::string laws = friction::reference_law_name();
   std::array<std::optional<double>, 7> value;  // U, Omega, a, b, psi, N, k
+  std::string input;                           // --input
+  std::string input_positional;                // INPUT
+  std::string on_error = "stop";
 };
 
 constexpr std::array<const char*, 7> kNames = {"U", "Omega", "a", "b", "psi", "N", "k"};
@@ -24,17 +36,84 @@ constexpr std::array<const char*, 7> kHelp = {
     "major semi-axis, m (> 0)", "minor semi-axis, m (0 < b <= a)",
     "angle from the slip direction to the major axis, rad", "normal force, N (>= 0)",
     "friction coefficient (>= 0)"};
+// Bad rows reported one line each on stderr (with --on-error skip or nan), then a count.
+constexpr std::size_t kMaxWarnings = 20;
+
+// The laws named in a comma-separated list, in its order; unknown, empty or repeated names throw.
+std::vector<std::unique_ptr<friction::FrictionLaw>> make_laws(const std::string& list) {
+  std::vector<std::unique_ptr<friction::FrictionLaw>> laws;
+  std::size_t start = 0;
+  while (true) {
+    const std::size_t end = list.find(',', start);
+    const std::string name = list.substr(start, end == std::string::npos ? std::string::npos : end - start);
+    if (name.empty()) throw std::invalid_argument("--law '" + list + "' has an empty name: separate names by one comma");
+    for (const auto& law : laws) {
+      if (law->name() == name) throw std::invalid_argument("--law: law '" + name + "' is listed twice");
+    }
+    laws.push_back(friction::make_law(name));
+    if (end == std::string::npos) break;
+    start = end + 1;
+  }
+  return laws;
+}
+
+// Writes `text` to stdout and flushes it: a failed write (a full disk, a closed pipe) throws.
+void write_stdout(const std::string& text) {
+  errno = 0;
+  std::cout << text << std::flush;
+  if (!std::cout) {
+    throw std::runtime_error(std::string("cannot write the output") + (errno ? std::string(": ") + std::strerror(errno) : ""));
+  }
+}
+
+void run_table(const std::vector<const friction::FrictionLaw*>& laws, const std::string& path,
+               friction::OnError on_error) {
+  friction::BatchOptions options;
+  options.on_error = on_error;
+  std::size_t shown = 0;
+  const char* what = on_error == friction::OnError::skip ? " (row skipped)" : " (written as nan)";
+  options.on_bad_row = [&](std::size_t line, const std::string& reason) {
+    if (shown++ < kMaxWarnings) {
+      std::cerr << "frictionlab: warning: input line " << line << ": " << reason << what << '\n';
+    }
+  };
+  friction::BatchSummary summary;
+  if (path == "-") {
+    summary = friction::evaluate_csv(laws, std::cin, std::cout, options);
+  } else {
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec)) throw std::invalid_argument("the input " + path + " is a directory");
+    std::ifstream file(path);
+    if (!file) throw std::invalid_argument("cannot open the input " + path + ": " + std::strerror(errno));
+    summary = friction::evaluate_csv(laws, file, std::cout, options);
+  }
+  if (summary.bad > kMaxWarnings) {
+    std::cerr << "frictionlab: warning: " << summary.bad << " bad rows in all (the first " << kMaxWarnings
+              << " shown above)\n";
+  }
+}
 
 void run(const FrictionOptions& opt) {
-  const auto law = friction::make_law(opt.law);
+  const auto made = make_laws(opt.laws);
+  std::vector<const friction::FrictionLaw*> laws;
+  for (const auto& law : made) laws.push_back(law.get());
+  const friction::OnError on_error = friction::parse_on_error(opt.on_error);
+  if (!opt.input.empty() && !opt.input_positional.empty()) {
+    throw std::invalid_argument("the input is given twice (--input " + opt.input + " and " + opt.input_positional +
+                                "): give one table");
+  }
+  const std::string path = !opt.input.empty() ? opt.input : opt.input_positional;
   std::size_t given = 0;
   for (const auto& v : opt.value) given += v.has_value();
+  if (given > 0 && !path.empty()) {
+    throw std::invalid_argument("give either one contact (--U ... --k) or an input table, not both");
+  }
   if (given == 0) {
-    if (isatty(STDIN_FILENO)) {
+    if (path.empty() && isatty(STDIN_FILENO)) {
       throw std::invalid_argument(
-          "no contact given: pass --U --Omega --a --b --psi --N --k, or pipe a CSV table on stdin");
+          "no contact given: pass --U --Omega --a --b --psi --N --k, an input file, or pipe a CSV table on stdin");
     }
-    friction::evaluate_csv(*law, std::cin, std::cout);
+    run_table(laws, path.empty() ? "-" : path, on_error);
     return;
   }
   for (std::size_t i = 0; i < kNames.size(); ++i) {
@@ -45,7 +124,12 @@ void run(const FrictionOptions& opt) {
   }
   const friction::ContactInput in{*opt.value[0], *opt.value[1], *opt.value[2], *opt.value[3],
                                   *opt.value[4], *opt.value[5], *opt.value[6]};
-  std::cout << friction::format_forces(law->evaluate(in)) << '\n';
+  std::string text;
+  for (const auto* law : laws) {
+    if (laws.size() > 1) (text += law->name()) += ',';
+    text += friction::format_forces(law->evaluate(in)) + '\n';
+  }
+  write_stdout(text);
 }
 
 }  // namespace
@@ -54,13 +138,24 @@ void register_friction_command(CLI::App& app) {
   auto opt = std::make_shared<FrictionOptions>();
   auto* cmd = app.add_subcommand(
       "friction",
-      "Evaluate a friction law: prints F1,F2,M (N, N, N m) for one contact, or, with no contact\n"
-      "options, reads a CSV table with columns U,Omega,a,b,psi,N,k on stdin and writes it back\n"
-      "with F1,F2,M appended");
-  cmd->add_option("--law", opt->law, "law name (see `frictionlab laws`)")->capture_default_str();
+      "Evaluate friction laws: prints F1,F2,M (N, N, N m) for one contact, or, with no contact\n"
+      "options, reads a CSV table with columns U,Omega,a,b,psi,N,k (any order, other columns passed\n"
+      "through; blank lines and a UTF-8 byte-order mark are accepted) from INPUT, or from stdin if\n"
+      "INPUT is '-' or absent, and writes it back with F1,F2,M appended. Rows are streamed in input\n"
+      "order; with several laws a `law` column is added and each input row gives one row per law,\n"
+      "in the order of --law. With --on-error stop nothing is written unless every row succeeds\n"
+      "(the table is spooled to a temporary file, then copied to stdout)");
+  cmd->add_option("--law", opt->laws, "law name, or several separated by commas (see `frictionlab laws`)")
+      ->capture_default_str();
   for (std::size_t i = 0; i < kNames.size(); ++i) {
     cmd->add_option(std::string("--") + kNames[i], opt->value[i], kHelp[i]);
   }
+  cmd->add_option("INPUT", opt->input_positional, "CSV table to evaluate ('-': stdin)");
+  cmd->add_option("--input", opt->input, "CSV table to evaluate ('-': stdin), as INPUT");
+  cmd->add_option("--on-error", opt->on_error,
+                  "a row that cannot be evaluated: stop (nothing is written), skip (left out, warned on stderr) "
+                  "or nan (written with F1,F2,M = nan, warned on stderr)")
+      ->capture_default_str();
   cmd->callback([opt] { run(*opt); });
 }
 

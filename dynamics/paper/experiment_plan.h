@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "dynamics/scenario.h"
+#include "friction/registry.h"
 
 namespace frictionlab::dynamics::paper {
 
@@ -21,8 +22,8 @@ namespace frictionlab::dynamics::paper {
 /// The laws run by default: the reference first.
 [[nodiscard]] const std::vector<std::string>& default_laws();
 
-/// The law every other law is compared with along the trajectory.
-inline constexpr std::string_view kReferenceLaw = "exact";
+/// The law every other law is compared with along the trajectory: the registry's reference law.
+inline const std::string kReferenceLaw = friction::reference_law_name();
 /// Output interval of the paper's runs, s (the scenario files say 1e-3 s). 100 Hz resolves the
 /// nutation of gamma3 (at most 20.1 Hz in these runs: dynamics/paper/nutation_frequency.py); the
 /// Hertz bounce (~49 Hz) is aliased, so lift-offs and min N come from the integrator's steps.

@@ -14,9 +14,11 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "bench/accuracy/plots.h"
 #include "bench/accuracy/report.h"
+#include "friction/registry.h"
 
 namespace frictionlab::accuracy {
 namespace {
@@ -109,6 +111,17 @@ TEST(Study, PrintedLawHasAnF2PoleAndTheWrongSignOfMAtLargeSlip) {
   const std::size_t i = grid.index(1, 1, 1, grid.s().size() - 1);
   EXPECT_GT(study.reference.M[i], 0.0);
   EXPECT_LT(study.values[1].M[i], 0.0);
+}
+
+TEST(Study, DefaultLawsAreTheRegistrysNeitherReferenceNorSlow) {
+  // The study decides nothing by name: its default list is the registry's laws minus those the
+  // registry marks as the reference or as slow, in registry order.
+  std::vector<std::string> expected;
+  for (const auto& info : friction::list_laws()) {
+    if (!info.reference && !info.slow) expected.push_back(info.name);
+  }
+  EXPECT_EQ(default_laws(), expected);
+  EXPECT_EQ(tiny_study().reference.law, friction::reference_law_name());
 }
 
 TEST(Study, DefaultLawsLeaveOutTheReferenceAndTheSlowLaw) {

@@ -3,10 +3,14 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <sstream>
+#include <string>
+#include <vector>
 
 #include "friction/batch.h"
 #include "friction/registry.h"
@@ -78,6 +82,127 @@ TEST(FrictionCommand, BadInputGivesOneLineAndNonZeroExitAndNoPartialOutput) {
   const auto invalid = run_frictionlab("friction --U 1 --Omega 1 --a 1 --b 2 --psi 0 --N 1 --k 1");
   EXPECT_NE(invalid.exit_code, 0);
   EXPECT_NE(invalid.err.find("b = 2 is invalid"), std::string::npos) << invalid.err;
+}
+
+// A CSV file under a fresh temporary directory, removed with it.
+struct TempCsv {
+  std::filesystem::path dir;
+  std::filesystem::path path;
+  explicit TempCsv(const std::string& tag, const std::string& content)
+      : dir(fresh_temp_dir(tag)), path(dir / "in.csv") {
+    std::filesystem::create_directories(dir);
+    std::ofstream(path) << content;
+  }
+  ~TempCsv() { std::filesystem::remove_all(dir); }
+};
+
+const std::string kTable =
+    "case,U,Omega,a,b,psi,N,k\n"
+    "1,0.1,10,0.01,0.004,0.3,20,0.1\n"
+    "2,0,-10,0.01,0.01,0,20,0.1\n";
+
+std::string library_output(const std::vector<std::string>& names, const std::string& csv) {
+  std::vector<std::unique_ptr<friction::FrictionLaw>> made;
+  std::vector<const friction::FrictionLaw*> laws;
+  for (const auto& n : names) {
+    made.push_back(friction::make_law(n));
+    laws.push_back(made.back().get());
+  }
+  std::istringstream in(csv);
+  std::ostringstream out;
+  friction::evaluate_csv(laws, in, out);
+  return out.str();
+}
+
+TEST(FrictionCommand, ReadsATableFromAFileGivenByPathOrByInput) {
+  const TempCsv file("friction_path", kTable);
+  const auto positional = run_frictionlab("friction --law pade-printed " + file.path.string());
+  ASSERT_EQ(positional.exit_code, 0) << positional.err;
+  EXPECT_EQ(positional.out, library_output({"pade-printed"}, kTable));
+  const auto option = run_frictionlab("friction --law pade-printed --input " + file.path.string());
+  ASSERT_EQ(option.exit_code, 0) << option.err;
+  EXPECT_EQ(option.out, positional.out);
+  const auto dash = run_frictionlab("friction --law pade-printed - < " + file.path.string());
+  ASSERT_EQ(dash.exit_code, 0) << dash.err;
+  EXPECT_EQ(dash.out, positional.out);
+}
+
+TEST(FrictionCommand, SeveralLawsAddALawColumn) {
+  const TempCsv file("friction_laws", kTable);
+  const auto r = run_frictionlab("friction --law exact,pade-printed " + file.path.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.out, library_output({"exact", "pade-printed"}, kTable));
+  EXPECT_EQ(r.out.substr(0, r.out.find('\n')), "case,U,Omega,a,b,psi,N,k,law,F1,F2,M");
+  // One contact, two laws: one line per law, the law first.
+  const auto single = run_frictionlab(
+      "friction --law pade-printed,coulomb-decoupled --U 0.5 --Omega 0 --a 0.01 --b 0.005 --psi 0.2 --N 10 --k 0.3");
+  ASSERT_EQ(single.exit_code, 0) << single.err;
+  EXPECT_EQ(single.out, "pade-printed,3,0,0\ncoulomb-decoupled,3,0,0\n");
+  const auto twice = run_frictionlab("friction --law exact,exact " + file.path.string());
+  EXPECT_EQ(twice.exit_code, 1);
+  EXPECT_NE(twice.err.find("law 'exact' is listed twice"), std::string::npos) << twice.err;
+}
+
+TEST(FrictionCommand, OnErrorSkipAndNanKeepGoingAndWarnOnStderr) {
+  const std::string csv = "U,Omega,a,b,psi,N,k\n1,0,1,1,0,1,0.5\n1,x,1,1,0,1,0.5\n1e999,0,1,1,0,1,0.5\n";
+  const TempCsv file("friction_onerror", csv);
+  const auto skip = run_frictionlab("friction --on-error skip " + file.path.string());
+  EXPECT_EQ(skip.exit_code, 0) << skip.err;
+  EXPECT_EQ(skip.out, "U,Omega,a,b,psi,N,k,F1,F2,M\n1,0,1,1,0,1,0.5,0.5,0,0\n");
+  EXPECT_EQ(count_lines(skip.err), 2u) << skip.err;
+  EXPECT_NE(skip.err.find("frictionlab: warning: input line 3: column Omega = 'x' is not a number (row skipped)"),
+            std::string::npos)
+      << skip.err;
+  EXPECT_NE(skip.err.find("input line 4: column U = '1e999' is out of the range of a double"), std::string::npos)
+      << skip.err;
+  const auto nan = run_frictionlab("friction --on-error nan " + file.path.string());
+  EXPECT_EQ(nan.exit_code, 0) << nan.err;
+  EXPECT_EQ(nan.out, "U,Omega,a,b,psi,N,k,F1,F2,M\n1,0,1,1,0,1,0.5,0.5,0,0\n1,x,1,1,0,1,0.5,nan,nan,nan\n"
+                     "1e999,0,1,1,0,1,0.5,nan,nan,nan\n");
+  const auto stop = run_frictionlab("friction " + file.path.string());
+  EXPECT_EQ(stop.exit_code, 1);
+  EXPECT_EQ(stop.out, "");
+  EXPECT_EQ(count_lines(stop.err), 1u) << stop.err;
+  const auto bad = run_frictionlab("friction --on-error ignore " + file.path.string());
+  EXPECT_EQ(bad.exit_code, 1);
+  EXPECT_NE(bad.err.find("--on-error = 'ignore' is not a choice: use stop, skip or nan"), std::string::npos) << bad.err;
+}
+
+TEST(FrictionCommand, AFullDiskIsAnErrorOfOneLine) {
+  // /dev/full accepts the open and fails every write: the command must notice (at the latest at
+  // the final flush) and say so, for one contact and for a table.
+  const TempCsv file("friction_full", kTable);
+  for (const std::string& args :
+       {std::string("friction --U 1 --Omega 1 --a 1 --b 1 --psi 0 --N 1 --k 1 > /dev/full"),
+        "friction " + file.path.string() + " > /dev/full",
+        "friction --on-error nan " + file.path.string() + " > /dev/full"}) {
+    const auto r = run_frictionlab(args);
+    EXPECT_EQ(r.exit_code, 1) << args;
+    EXPECT_EQ(count_lines(r.err), 1u) << args << ": " << r.err;
+    EXPECT_EQ(r.err.rfind("frictionlab: error: cannot write the output", 0), 0u) << args << ": " << r.err;
+  }
+}
+
+TEST(FrictionCommand, InputProblemsAreOneLine) {
+  const auto dir = fresh_temp_dir("friction_inputs");
+  std::filesystem::create_directories(dir);
+  struct Case {
+    std::string args, expect;
+  };
+  const TempCsv file("friction_both", kTable);
+  const Case cases[] = {
+      {"friction " + (dir / "missing.csv").string(), "cannot open the input " + (dir / "missing.csv").string()},
+      {"friction " + dir.string(), dir.string() + " is a directory"},
+      {"friction --U 1 " + file.path.string(), "give either one contact (--U ... --k) or an input table, not both"},
+      {"friction --input " + file.path.string() + " " + file.path.string(), "the input is given twice"},
+  };
+  for (const auto& c : cases) {
+    const auto r = run_frictionlab(c.args);
+    EXPECT_EQ(r.exit_code, 1) << c.args;
+    EXPECT_EQ(count_lines(r.err), 1u) << c.args << ": " << r.err;
+    EXPECT_NE(r.err.find(c.expect), std::string::npos) << c.args << ": " << r.err;
+  }
+  std::filesystem::remove_all(dir);
 }
 
 }  // namespace

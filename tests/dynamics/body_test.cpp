@@ -7,7 +7,7 @@
 namespace frictionlab::dynamics {
 namespace {
 
-// model-notes §4 prints 3 significant digits.
+// docs/model.md §6 prints 3 significant digits.
 constexpr double kPrintedTol = 5e-5;
 
 std::string error_of(const BodySpec& spec) {

@@ -10,7 +10,7 @@ namespace {
 
 // The quadrature is exact for these polynomial integrands: only rounding remains.
 constexpr double kExactRelTol = 1e-12;
-// model-notes §4 prints the egg's values to 3 significant digits: half a unit in the last digit.
+// docs/model.md §6 prints the egg's values to 3 significant digits: half a unit in the last digit.
 constexpr double kPrintedTol = 5e-5;
 
 constexpr double pi = std::numbers::pi;
@@ -46,7 +46,7 @@ TEST(DynMassProperties, OffsetSphereHasItsCentroidAtTheCentreAndParallelAxes) {
 
 TEST(DynMassProperties, PaperEggMatchesModelNotesAndExactIntegrals) {
   const MassProperties p = homogeneous_mass_properties(Profile::paper_egg(), 2.0);
-  // Independent values (model-notes §4).
+  // Independent values (docs/model.md §6).
   EXPECT_NEAR(p.centroid, 0.0705, kPrintedTol);
   EXPECT_NEAR(p.C, 0.0559, kPrintedTol);
   EXPECT_NEAR(p.A, 0.0403, kPrintedTol);               // about the centroid (egg-homogeneous)

@@ -37,7 +37,7 @@ TEST(DynProfile, PaperEggIsConvexBetweenItsTwoLowerRoots) {
   const Profile egg = Profile::paper_egg();
   EXPECT_NEAR(egg.z_lo(), -0.1, kPoleTol);
   EXPECT_NEAR(egg.z_hi(), 0.252, kPoleTol);
-  // model-notes §4: about 0.53 m wide and 0.352 m long.
+  // docs/model.md §6: about 0.53 m wide and 0.352 m long.
   EXPECT_NEAR(2.0 * egg.max_radius(), 0.529, 1e-3);
   EXPECT_NEAR(egg.length(), 0.352, kPoleTol);
   const auto& c = egg.chi2().coefficients();

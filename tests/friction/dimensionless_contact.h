@@ -1,5 +1,5 @@
 #pragma once
-// Contacts in the dimensionless form every law depends on (model-notes §1, scaling):
+// Contacts in the dimensionless form every law depends on (docs/model.md, scaling):
 // a = 1 m, b = mu, U = s |Omega|, N = 1 N, k = 1, so F1, F2 read per kN and M per kN a.
 
 #include <cmath>

@@ -1,4 +1,4 @@
-// `exact` makes no heap allocation per evaluation (issue 4 §1): counted through the global
+// `exact` makes no heap allocation per evaluation: counted through the global
 // operator new, over the benchmark's input set and the special cases.
 
 #include <gtest/gtest.h>

@@ -1,5 +1,5 @@
 // Tests of friction/exact_reference_law.h: the brute-force GSL quadrature against the closed
-// forms of model notes §1, and the semi-analytic ExactLaw against it on a seeded random set.
+// forms of docs/model.md, and the semi-analytic ExactLaw against it on a seeded random set.
 // The reference costs milliseconds per call: the sets are kept small.
 
 #include "friction/exact_reference_law.h"
@@ -22,9 +22,9 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-// The accuracy the reference promises (per kN, per kNa): GSL's error estimates must be below it
-// or the call throws. Measured, it is ~5e-12 at worst (docs/exact-law.md).
-constexpr double kReferenceTol = 1e-10;
+// The accuracy the reference promises in its domain (per kN, per kNa; friction/exact_reference_law.h),
+// plus that of `exact` (1e-13), which is negligible beside it.
+constexpr double kReferenceTol = kExactReferenceAccuracy;
 
 ContactInput make(double s, double mu, double psi, double omega = 1.0) {
   return dimensionless_contact(s, mu, psi, omega);
@@ -64,6 +64,33 @@ TEST(ExactReferenceLaw, LimitsAndInputValidation) {
   ContactInput bad = make(0.5, 0.3, 0.4);
   bad.b = 1.5;
   EXPECT_THROW((void)law.evaluate(bad), std::invalid_argument);
+}
+
+TEST(ExactReferenceLaw, RejectsPatchesBelowItsDomainWithAClearError) {
+  // Below b/a = 0.01 its quadrature is not accurate (GSL round-off, or silently wrong values):
+  // std::invalid_argument naming the ratio and the rule, never a GSL runtime error.
+  const ExactReferenceLaw law;
+  for (const double mu : {1e-9, 1e-6, 1e-3, 0.0099}) {
+    try {
+      (void)law.evaluate(make(0.5, mu, 1.5707963217948966));
+      ADD_FAILURE() << "no exception at mu = " << mu;
+    } catch (const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find("is below 0.01, the smallest for which its GSL quadrature"),
+                std::string::npos)
+          << e.what();
+    }
+  }
+  EXPECT_NO_THROW((void)law.evaluate(make(0.5, kExactReferenceMinAxisRatio, 1.5707963217948966)));
+}
+
+TEST(ExactReferenceLaw, SlipAboveTheDoubleRangeIsPureSliding) {
+  // U / (a |Omega|) = 1e300 / 1e-300 overflows: F1 = kN to within 1e-600, no moment.
+  ContactInput in = make(0.0, 0.5, 0.3, 1e-300);
+  in.U = 1e300;
+  const FrictionForces f = ExactReferenceLaw().evaluate(in);
+  EXPECT_EQ(f.F1, 1.0);
+  EXPECT_EQ(f.F2, 0.0);
+  EXPECT_EQ(f.M, 0.0);
 }
 
 TEST(ExactReferenceLaw, ExactLawAgreesOnASeededRandomSet) {

@@ -1,5 +1,5 @@
 #pragma once
-// Closed forms and asymptotics of the exact friction law over a Hertz patch, model notes §1,
+// Closed forms and asymptotics of the exact friction law over a Hertz patch, docs/model.md,
 // written out independently of friction/exact_law.cpp (which never evaluates them) so that tests
 // can hold the law against them. All results are dimensionless: forces per kN, moments per kNa,
 // u = U / (a |Omega|), mu = b / a, e^2 = 1 - mu^2. Elliptic integrals from Boost.Math
@@ -19,7 +19,7 @@ struct CircleForces {
   double m;   ///< |M| / (kNa)
 };
 
-/// Circle, model notes §1. For u >= 1 the bracketed terms cancel like u^4 (M) and u^2 (F1)
+/// Circle, docs/model.md. For u >= 1 the bracketed terms cancel like u^4 (M) and u^2 (F1)
 /// as u grows, so they are summed in long double: good to ~1e-15 for u <= 10; do not use the
 /// u >= 1 branch beyond u ~ 30.
 inline CircleForces circle(double u_in) {

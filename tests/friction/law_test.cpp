@@ -60,6 +60,36 @@ TEST(Validate, NamesTheValueAndTheRule) {
   }
 }
 
+TEST(Validate, RejectsScalesOutsideTheDoubleRange) {
+  // Every input finite, but a scale every law needs is not a double: the largest force k N, the
+  // largest moment k N a, or the axis ratio b/a (a thinner patch than the smallest normal double
+  // is a line).
+  const ContactInput good{1.0, 1.0, 1.0, 0.5, 0.0, 1.0, 0.1};
+  struct Case {
+    ContactInput in;
+    std::string expect;
+  };
+  auto with = [&](auto edit) {
+    ContactInput in = good;
+    edit(in);
+    return in;
+  };
+  const Case cases[] = {
+      {with([](auto& c) { c.k = 1e200; c.N = 1e200; }), "k N = inf overflows"},
+      {with([](auto& c) { c.k = 1e200; c.N = 1e100; c.a = 1e10; c.b = 1.0; }), "k N a = inf overflows"},
+      {with([](auto& c) { c.a = 1e300; c.b = 1e-300; }), "b = 1e-300 is invalid: the axis ratio b/a = 0 ("},
+      {with([](auto& c) { c.a = 1.0; c.b = 1e-310; }), "is below the smallest normal double, 2.2250738585072014e-308"},
+  };
+  for (const auto& c : cases) {
+    const auto msg = rejection(c.in);
+    EXPECT_NE(msg.find(c.expect), std::string::npos) << "message: '" << msg << "'";
+  }
+  // At the edge of the range: accepted.
+  EXPECT_EQ(rejection(with([](auto& c) { c.k = 1e150; c.N = 1e150; c.a = 1e-10; c.b = 1e-10; })), "");
+  EXPECT_EQ(rejection(with([](auto& c) { c.a = 1.0; c.b = std::numeric_limits<double>::min(); })), "");
+  EXPECT_EQ(rejection(with([](auto& c) { c.k = 1e-200; c.N = 1e-200; })), "");  // k N underflows: no friction
+}
+
 TEST(Registry, EveryListedLawIsMadeByItsNameAndValidatesInput) {
   const auto laws = list_laws();
   ASSERT_GE(laws.size(), 3u);
@@ -70,6 +100,37 @@ TEST(Registry, EveryListedLawIsMadeByItsNameAndValidatesInput) {
     EXPECT_EQ(law->name(), info.name);
     EXPECT_THROW((void)law->evaluate({1.0, 1.0, 1.0, 2.0, 0.0, 1.0, 0.1}), std::invalid_argument);
   }
+}
+
+TEST(Registry, ExactlyOneReferenceLawAndItIsExact) {
+  // The reference is a registry fact, not a name callers repeat: `exact`, listed first.
+  const auto laws = list_laws();
+  int references = 0;
+  for (const auto& info : laws) references += info.reference ? 1 : 0;
+  EXPECT_EQ(references, 1);
+  ASSERT_FALSE(laws.empty());
+  EXPECT_TRUE(laws.front().reference);
+  EXPECT_EQ(reference_law_name(), "exact");
+  EXPECT_EQ(make_reference_law()->name(), "exact");
+  EXPECT_FALSE(law_info("exact").slow);
+}
+
+TEST(Registry, FactsAreTheLawsOwn) {
+  // has_poles and promises come from the law itself; slow marks the GSL cross-check only.
+  for (const auto& info : list_laws()) {
+    SCOPED_TRACE(info.name);
+    const auto law = make_law(info.name);
+    EXPECT_EQ(info.has_poles, law->has_poles());
+    EXPECT_EQ(info.promises.tolerance, law->promises().tolerance);
+    EXPECT_EQ(info.promises.dissipative, law->promises().dissipative);
+    const LawInfo again = law_info(info.name);
+    EXPECT_EQ(again.slow, info.slow);
+    EXPECT_EQ(again.reference, info.reference);
+  }
+  EXPECT_TRUE(law_info("exact-reference").slow);
+  EXPECT_TRUE(law_info("pade-printed").has_poles);
+  EXPECT_FALSE(law_info("pade-reconstructed").has_poles);
+  EXPECT_THROW((void)law_info("nope"), std::invalid_argument);
 }
 
 TEST(Registry, UnknownNameListsTheKnownOnes) {

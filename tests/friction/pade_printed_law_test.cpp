@@ -7,6 +7,8 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <stdexcept>
+#include <string>
 
 namespace frictionlab::friction {
 namespace {
@@ -137,6 +139,35 @@ TEST(PadePrintedLaw, F2HasARealPoleWhereItsDenominatorVanishes) {
   EXPECT_GT(std::abs(below.F2), 1e4);
   EXPECT_GT(std::abs(above.F2), 1e4);
   EXPECT_LT(below.F2 * above.F2, 0.0);
+}
+
+TEST(PadePrintedLaw, OnAPoleItThrowsInsteadOfReturningInfinity) {
+  // 1e-12 from the F2 pole with k N = 1e300 N, |F2| ~ 1e300 / (2e-12 s*^2) leaves the double
+  // range: the printed law has no value there, and says so.
+  const double mu = 0.5, psi = 0.6;
+  const auto c = pade_printed_coefficients(mu, psi);
+  const double s_pole = (-c.a3 + std::sqrt(c.a3 * c.a3 - 4.0 * c.a4)) / 2.0;
+  const PadePrintedLaw law;
+  try {
+    (void)law.evaluate(contact(s_pole * (1 + 1e-12), 1.0, 1.0, mu, psi, 1e300, 1.0));
+    ADD_FAILURE() << "no exception on the pole";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("the denominator of F2 in eq. (8) vanishes"), std::string::npos)
+        << e.what();
+  }
+}
+
+TEST(PadePrintedLaw, RejectsPatchesTooSlenderForItsCoefficients) {
+  // b/a = 1e-200: mu^(-7/4) = 1e350 is not a double.
+  const PadePrintedLaw law;
+  try {
+    (void)law.evaluate(contact(1.0, 1.0, 1.0, 1e-200, 0.3, 1.0, 1.0));
+    ADD_FAILURE() << "no exception";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("is below 1e-150, where the coefficients of eq. (9)"), std::string::npos)
+        << e.what();
+  }
+  EXPECT_NO_THROW((void)law.evaluate(contact(1.0, 1.0, 1.0, 1e-150, 0.3, 1.0, 1.0)));
 }
 
 TEST(PadePrintedLaw, MinorAxisReadingUsesAlphaEqualB) {

@@ -143,7 +143,7 @@ TEST(PadeReconstructedLaw, HandValuesAtModulusOneOverRootTwo) {
 
 TEST(PadeReconstructedLaw, SlowSlipMatchesTheExactLeadingTerms) {
   // s -> 0: F1 = (3/4)(K + B cos 2psi) s, F2 = (3/4) B sin 2psi s, M = (3/8) E sign(Omega)
-  // (1 - ((K + B cos 2psi)/E) s^2) (model-notes §1; the s^2 term of M is derived in
+  // (1 - ((K + B cos 2psi)/E) s^2) (docs/model.md; the s^2 term of M is derived in
   // docs/pade-reconstruction.md §2).
   for (double mu : {0.05, 0.3, 0.6, 0.95}) {
     const auto ref = boost_reference(mu);
@@ -169,7 +169,7 @@ TEST(PadeReconstructedLaw, SlowSlipMatchesTheExactLeadingTerms) {
 }
 
 TEST(PadeReconstructedLaw, FastSlipMatchesTheExactLeadingTerms) {
-  // s -> inf: F1 = 1 - d3/(10 s^2), F2 = d4/(10 s^2), |M| = d3/(5 s) (model-notes §1).
+  // s -> inf: F1 = 1 - d3/(10 s^2), F2 = d4/(10 s^2), |M| = d3/(5 s) (docs/model.md).
   const PadeReconstructedLaw law;
   for (double mu : {0.05, 0.3, 0.6, 0.95, 1.0}) {
     for (double psi : {0.0, 0.3, pi / 4.0, 1.2, pi / 2.0, 2.5}) {
@@ -216,7 +216,7 @@ TEST(PadeReconstructedLaw, NoPoleAnywhere) {
         ASSERT_LE(std::abs(f.F2), 1.0);
         ASSERT_GE(f.M, 0.0);
         ASSERT_LE(f.M, c.m0_over_alpha_f0);
-        // F2 has the sign of sin 2psi, as the exact F2 (model-notes §1).
+        // F2 has the sign of sin 2psi, as the exact F2 (docs/model.md).
         ASSERT_GE(f.F2 * std::sin(2.0 * psi), 0.0);
       }
     }
@@ -315,7 +315,7 @@ TEST(PadeReconstructedLaw, SymmetriesAndDissipationOnRandomInputs) {
 // ---- Against the exact law (friction/exact_law.h, ~1e-13) ----
 
 TEST(PadeReconstructedLaw, AgreesWithTheExactLawAtBothEnds) {
-  // The matched limits, now against the exact law itself rather than the model notes' formulas.
+  // The matched limits, now against the exact law itself rather than the formulas of docs/model.md.
   // Tolerances are relative, set by the first neglected term of each side (bounds for mu >= 0.05:
   // a1 >= 3.7e-4, b1 >= 2.7e-3, a1 <= 0.51) plus the 1e-13 of the exact law.
   const ExactLaw exact;

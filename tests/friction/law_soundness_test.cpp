@@ -1,0 +1,308 @@
+// Soundness of every registered law (in the manner of Ceres' loss-function tests): one suite run
+// over list_laws(). What every law must do: finite output or std::invalid_argument for every valid
+// input, the limits N = 0, Omega = 0, U = 0 and U = Omega = 0. What a law promises
+// (FrictionLaw::promises(), from its registry entry): the parity of each output in Omega,
+// pi-periodicity and the mirror symmetry in psi, dissipation, the bounds |F| <= kN and
+// |M| <= kN a, the exact pure-spin torque. No test here branches on a law's name.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <memory>
+#include <random>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "friction/law.h"
+#include "friction/registry.h"
+#include "tests/friction/hertz_closed_forms.h"
+
+namespace frictionlab::friction {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+// Points per check; a slow law (milliseconds per call) gets a few, enough to exercise each check.
+constexpr int kPoints = 300;
+constexpr int kSlowLawPoints = 3;
+constexpr int kFuzzPoints = 4000;
+constexpr int kSlowLawFuzzPoints = 12;
+// Symmetries are checked away from a declared pole, where rounding of psi + pi is amplified
+// without bound: a point is skipped if a denominator, relative to 1 + s^2, is below this.
+constexpr double kPoleMargin = 1e-6;
+
+int points(const LawInfo& info, int normal, int slow) { return info.slow ? slow : normal; }
+
+// Well-conditioned contacts for the symmetry checks: s log-uniform in [1e-3, 1e3], mu
+// log-uniform in [0.01, 1], psi in (-pi, pi), a, N, k in physical ranges, both spins.
+std::vector<ContactInput> moderate_inputs(int n, unsigned seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> uni(0.0, 1.0);
+  std::vector<ContactInput> out;
+  for (int i = 0; i < n; ++i) {
+    ContactInput in;
+    in.a = 0.001 + 0.05 * uni(rng);
+    in.b = in.a * std::pow(10.0, -2.0 * uni(rng));
+    in.psi = kPi * (2.0 * uni(rng) - 1.0);
+    in.Omega = (i % 2 == 0 ? 1.0 : -1.0) * std::pow(10.0, -1.0 + 3.0 * uni(rng));
+    in.U = std::pow(10.0, -3.0 + 6.0 * uni(rng)) * in.a * std::abs(in.Omega);
+    in.N = 0.1 + 100.0 * uni(rng);
+    in.k = 0.01 + uni(rng);
+    out.push_back(in);
+  }
+  return out;
+}
+
+// 10^x with x uniform in [-300, 300], or 0 with probability `zero`.
+double extreme_magnitude(std::mt19937_64& rng, double zero) {
+  std::uniform_real_distribution<double> uni(0.0, 1.0);
+  if (uni(rng) < zero) return 0.0;
+  return std::pow(10.0, -300.0 + 600.0 * uni(rng));
+}
+
+// Every input at an extreme but valid magnitude, 1e-300..1e300, independently: sizes of the patch
+// (b <= a by swapping), speeds, loads, angles. Some are rejected by validate() (k N overflowing,
+// b/a below the double range); the rest must give finite output.
+std::vector<ContactInput> extreme_inputs(int n, unsigned seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> uni(0.0, 1.0);
+  std::vector<ContactInput> out;
+  for (int i = 0; i < n; ++i) {
+    ContactInput in;
+    in.U = extreme_magnitude(rng, 0.05);
+    in.Omega = (uni(rng) < 0.5 ? -1.0 : 1.0) * extreme_magnitude(rng, 0.05);
+    in.a = extreme_magnitude(rng, 0.0);
+    in.b = extreme_magnitude(rng, 0.0);
+    if (in.b > in.a) std::swap(in.a, in.b);
+    if (uni(rng) < 0.1) in.b = in.a;  // circles
+    in.psi = (uni(rng) < 0.5 ? -1.0 : 1.0) * (uni(rng) < 0.5 ? kPi * uni(rng) : extreme_magnitude(rng, 0.05));
+    in.N = extreme_magnitude(rng, 0.02);
+    in.k = extreme_magnitude(rng, 0.02);
+    out.push_back(in);
+  }
+  return out;
+}
+
+bool finite(const FrictionForces& f) {
+  return std::isfinite(f.F1) && std::isfinite(f.F2) && std::isfinite(f.M);
+}
+
+// Is `in` within kPoleMargin of a pole the law declares?
+bool near_pole(const FrictionLaw& law, const ContactInput& in) {
+  if (!law.has_poles() || in.Omega == 0.0) return false;
+  const double s = slip_ratio(in.U, in.a, in.Omega);
+  const PoleDenominators d = law.pole_denominators(in);
+  for (const double x : {d.F1, d.F2, d.M}) {
+    if (std::abs(x) < kPoleMargin * (1.0 + s * s)) return true;
+  }
+  return false;
+}
+
+// The expected change of an output under Omega -> -Omega.
+double parity_sign(Parity p) { return p == Parity::odd ? -1.0 : 1.0; }
+
+}  // namespace
+
+// gtest prints a parameter with this (its name) rather than as bytes.
+void PrintTo(const LawInfo& info, std::ostream* os) { *os << info.name; }
+
+namespace {
+
+class LawSoundness : public ::testing::TestWithParam<LawInfo> {
+ protected:
+  void SetUp() override { law_ = make_law(GetParam().name); }
+  const LawInfo& info() const { return GetParam(); }
+  const LawPromises& promises() const { return GetParam().promises; }
+  const FrictionLaw& law() const { return *law_; }
+
+ private:
+  std::unique_ptr<FrictionLaw> law_;
+};
+
+TEST_P(LawSoundness, NoLoadNoFriction) {
+  for (const auto& base : moderate_inputs(points(info(), 40, kSlowLawPoints), 1)) {
+    ContactInput in = base;
+    in.N = 0.0;
+    const FrictionForces f = law().evaluate(in);
+    EXPECT_EQ(f.F1, 0.0);
+    EXPECT_EQ(f.F2, 0.0);
+    EXPECT_EQ(f.M, 0.0);
+  }
+}
+
+TEST_P(LawSoundness, PureSlidingIsCoulomb) {
+  // Omega = 0: every patch point slides with the centre, so F = kN along the slip, no moment.
+  for (const auto& base : moderate_inputs(points(info(), 40, kSlowLawPoints), 2)) {
+    ContactInput in = base;
+    in.Omega = 0.0;
+    const FrictionForces f = law().evaluate(in);
+    const double kN = in.k * in.N;
+    EXPECT_NEAR(f.F1, kN, promises().tolerance * kN);
+    EXPECT_NEAR(f.F2, 0.0, promises().tolerance * kN);
+    EXPECT_NEAR(f.M, 0.0, promises().tolerance * kN * in.a);
+  }
+}
+
+TEST_P(LawSoundness, PureSpinHasNoNetForce) {
+  // U = 0: the slip field is odd under rotation of the patch by pi, so the force vanishes; the
+  // moment opposes the spin and cannot exceed kN a.
+  for (const auto& base : moderate_inputs(points(info(), 40, kSlowLawPoints), 3)) {
+    ContactInput in = base;
+    in.U = 0.0;
+    const FrictionForces f = law().evaluate(in);
+    const double kN = in.k * in.N;
+    const double kNa = kN * in.a;
+    EXPECT_NEAR(f.F1, 0.0, promises().tolerance * kN);
+    EXPECT_NEAR(f.F2, 0.0, promises().tolerance * kN);
+    EXPECT_GT(f.M * in.Omega, 0.0);
+    EXPECT_LE(std::abs(f.M), kNa);
+    if (promises().exact_pure_spin) {
+      EXPECT_NEAR(f.M, std::copysign(test::pure_spin_moment(in.b / in.a), in.Omega) * kNa,
+                  promises().tolerance * kNa);
+    }
+  }
+}
+
+TEST_P(LawSoundness, RestGivesNoFriction) {
+  // U = Omega = 0: the traction has no direction; every law documents zero there.
+  ContactInput in{0.0, 0.0, 0.02, 0.01, 0.3, 10.0, 0.2};
+  const FrictionForces f = law().evaluate(in);
+  EXPECT_EQ(f.F1, 0.0);
+  EXPECT_EQ(f.F2, 0.0);
+  EXPECT_EQ(f.M, 0.0);
+}
+
+TEST_P(LawSoundness, ParityInOmegaAsPromised) {
+  const LawPromises& p = promises();
+  for (const auto& in : moderate_inputs(points(info(), kPoints, kSlowLawPoints), 4)) {
+    if (near_pole(law(), in)) continue;
+    ContactInput flipped = in;
+    flipped.Omega = -in.Omega;
+    const FrictionForces f = law().evaluate(in);
+    const FrictionForces g = law().evaluate(flipped);
+    const double kN = in.k * in.N;
+    const double tol = p.tolerance * kN;
+    if (p.F1_in_Omega != Parity::none) {
+      EXPECT_NEAR(g.F1, parity_sign(p.F1_in_Omega) * f.F1, tol);
+    }
+    if (p.F2_in_Omega != Parity::none) {
+      EXPECT_NEAR(g.F2, parity_sign(p.F2_in_Omega) * f.F2, tol);
+    }
+    if (p.M_in_Omega != Parity::none) {
+      EXPECT_NEAR(g.M, parity_sign(p.M_in_Omega) * f.M, tol * in.a);
+    }
+  }
+}
+
+TEST_P(LawSoundness, SymmetriesInPsiAsPromised) {
+  const LawPromises& p = promises();
+  for (const auto& in : moderate_inputs(points(info(), kPoints, kSlowLawPoints), 5)) {
+    ContactInput turned = in;
+    turned.psi = in.psi + kPi;
+    ContactInput mirrored = in;
+    mirrored.psi = -in.psi;
+    if (near_pole(law(), in) || near_pole(law(), turned) || near_pole(law(), mirrored)) continue;
+    const FrictionForces f = law().evaluate(in);
+    const double kN = in.k * in.N;
+    const double tol = p.tolerance * kN;
+    if (p.pi_periodic_in_psi) {
+      const FrictionForces g = law().evaluate(turned);
+      EXPECT_NEAR(g.F1, f.F1, tol);
+      EXPECT_NEAR(g.F2, f.F2, tol);
+      EXPECT_NEAR(g.M, f.M, tol * in.a);
+    }
+    if (p.psi_mirror) {
+      const FrictionForces g = law().evaluate(mirrored);
+      EXPECT_NEAR(g.F1, f.F1, tol);
+      EXPECT_NEAR(g.F2, -f.F2, tol);
+      EXPECT_NEAR(g.M, f.M, tol * in.a);
+    }
+  }
+}
+
+// Checks the promised dissipation and bounds at `in`, where `f` is the law's value.
+void expect_promised_bounds(const LawPromises& p, const ContactInput& in, const FrictionForces& f) {
+  const double kN = in.k * in.N;
+  if (kN == 0.0) return;  // k N underflowed: no friction, nothing to bound
+  const double tol = p.tolerance;
+  // In units of kN and kN a, so that no product overflows at extreme magnitudes.
+  const double f1 = f.F1 / kN;
+  const double f2 = f.F2 / kN;
+  const double m = f.M / kN / in.a;
+  if (p.bounded) {
+    EXPECT_LE(std::hypot(f1, f2), 1.0 + tol);
+    EXPECT_LE(std::abs(m), 1.0 + tol);
+  }
+  if (p.dissipative && in.Omega != 0.0) {
+    // (F1 U + M Omega) / (kN a |Omega|) = f1 s + m sign(Omega) >= 0.
+    const double s = slip_ratio(in.U, in.a, in.Omega);
+    const double sign = in.Omega > 0.0 ? 1.0 : -1.0;
+    if (std::isinf(s)) {
+      EXPECT_GE(f1, -tol);
+    } else {
+      EXPECT_GE(f1 * s + m * sign, -tol * (1.0 + s));
+    }
+  } else if (p.dissipative) {
+    EXPECT_GE(f1 * in.U, 0.0);
+  }
+}
+
+TEST_P(LawSoundness, DissipationAndBoundsAsPromised) {
+  for (const auto& in : moderate_inputs(points(info(), kPoints, kSlowLawPoints), 6)) {
+    SCOPED_TRACE("U = " + std::to_string(in.U) + ", Omega = " + std::to_string(in.Omega));
+    expect_promised_bounds(promises(), in, law().evaluate(in));
+  }
+}
+
+TEST_P(LawSoundness, FiniteOrRejectedOverExtremeMagnitudes) {
+  // Every input valid by validate() gives finite output, except that a law rejects b/a below its
+  // min_axis_ratio with std::invalid_argument, and a law that does not promise its whole domain
+  // may throw it elsewhere too (on a pole).
+  const auto inputs = extreme_inputs(points(info(), kFuzzPoints, kSlowLawFuzzPoints), 7);
+  int valid = 0;
+  for (const auto& in : inputs) {
+    try {
+      validate(in);
+    } catch (const std::invalid_argument&) {
+      continue;
+    }
+    ++valid;
+    std::ostringstream where;
+    where.precision(17);
+    where << "U = " << in.U << ", Omega = " << in.Omega << ", a = " << in.a << ", b = " << in.b
+          << ", psi = " << in.psi << ", N = " << in.N << ", k = " << in.k;
+    FrictionForces f;
+    const bool accepted = in.b / in.a >= promises().min_axis_ratio;
+    try {
+      f = law().evaluate(in);
+    } catch (const std::invalid_argument& e) {
+      EXPECT_FALSE(accepted && promises().whole_domain) << where.str() << ": " << e.what();
+      continue;
+    }
+    EXPECT_TRUE(accepted) << where.str() << ": b/a below the law's smallest axis ratio, not rejected";
+    ASSERT_TRUE(finite(f)) << where.str() << " gives F1 = " << f.F1 << ", F2 = " << f.F2
+                           << ", M = " << f.M;
+    SCOPED_TRACE(where.str());
+    expect_promised_bounds(promises(), in, f);
+  }
+  // Not vacuous: most of the fuzzed inputs are valid.
+  EXPECT_GT(valid, static_cast<int>(inputs.size()) / 3);
+}
+
+std::string test_name(const ::testing::TestParamInfo<LawInfo>& p) {
+  std::string name = p.param.name;
+  for (char& c : name) {
+    if (c == '-') c = '_';
+  }
+  return name;
+}
+
+INSTANTIATE_TEST_SUITE_P(EveryRegisteredLaw, LawSoundness, ::testing::ValuesIn(list_laws()), test_name);
+
+}  // namespace
+}  // namespace frictionlab::friction
