@@ -32,7 +32,7 @@ namespace frictionlab::dynamics::puck {
 struct PuckStudyOptions {
   std::filesystem::path scenario_dir;  ///< holds puck-disk.toml and puck-ellipse.toml
   std::vector<std::string> laws;       ///< law specs; empty: default_study_laws()
-  std::vector<double> kappas = {0.1, 0.15, 0.2, 0.25, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8, 1.0, 1.5};
+  std::vector<double> kappas = {0.1, 0.15, 0.2, 0.25, 0.3, 0.35, 0.4, 0.45, 0.5, 0.55, 0.6, 0.65, 0.7, 0.8, 1.0, 1.5};
   std::vector<double> run_kappas = {0.3, 0.5, 1.0};
   std::vector<double> start_ratios = {0.25, 4.0};
   double threshold_fraction = 1e-6;  ///< run.rest_slip_speed / sqrt(g a) and run.rest_spin / sqrt(g/a)
@@ -40,7 +40,7 @@ struct PuckStudyOptions {
   void validate() const;  ///< std::invalid_argument naming the option
 };
 
-/// Every registered law, then the pressure-model specs exact:pressure=uniform and
+/// Every registered law that is not slow (friction/registry.h), then the pressure-model specs exact:pressure=uniform and
 /// exact:pressure=punch where the registry accepts them; those it refuses go to `unavailable`.
 [[nodiscard]] std::vector<std::string> default_study_laws(std::vector<std::string>* unavailable = nullptr);
 

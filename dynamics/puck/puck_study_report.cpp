@@ -211,7 +211,7 @@ std::vector<std::string> write_figures(const PuckStudyResults& r, const std::fil
     std::ostringstream s;
     s << "# The terminal ratio r* against the inertia ratio kappa (circular patch; gaps: no finite r*).\n"
       << kTerminal << "\nset output 'regimes.png'\nset grid\nset key top right font ',10'\n"
-      << "set xlabel 'κ = I/(m a^2)'\nset ylabel 'terminal ratio r* = v/(a ω)'\nset yrange [0:*]\n"
+      << "set xlabel 'κ = I/(m a^2)'\nset ylabel 'terminal ratio r* = v/(a ω)'\nset logscale y\n"
       << "set title 'Slip and spin stop together only where a finite r* exists'\n"
       << plot << "\n";
     support::write_file_atomically(dir / "regimes.gp", s.str());
