@@ -11,5 +11,6 @@ void register_simulate_command(CLI::App& app);  // simulate_command.cpp
 void register_accuracy_command(CLI::App& app);  // accuracy_command.cpp
 void register_paper_command(CLI::App& app);     // paper_command.cpp
 void register_puck_study_command(CLI::App& app);  // puck_study_command.cpp
+void register_tippe_top_command(CLI::App& app);   // tippe_top_command.cpp
 
 }  // namespace frictionlab::cli
