@@ -122,7 +122,7 @@ std::vector<std::string> write_figures(const TippeTopStudyResults& r, const std:
   g << "# gamma3 against time for every law (docs/tippe-top.md).\n"
     << kTerminal << "\nset output 'gamma3.png'\nset grid\nset key outside right font ',10'\nset yrange [-1.05:1.05]\n"
     << "set xlabel 't (s)'\nset ylabel 'γ_3 (+1: on the near pole, −1: inverted)'\n"
-    << "set title 'Tippe top (Leine & Glocker 2003): γ_3 against time'\n"
+    << "set title 'Tippe top (Leine and Glocker 2003): γ_3 against time'\n"
     << "set arrow from graph 0, first " << g7(kInvertedGamma3) << " to graph 1, first " << g7(kInvertedGamma3)
     << " nohead dt 3 lc rgb '#888888'\n"
     << gamma_plot << "\n";
