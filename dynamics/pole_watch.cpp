@@ -20,20 +20,26 @@ int sign_of(double d) { return d > 0.0 ? 1 : (d < 0.0 ? -1 : 0); }
 
 PoleWatch::PoleWatch(const friction::FrictionLaw& law, double k) : law_(law), k_(k), active_(law.has_poles()) {}
 
+PoleWatch::Point PoleWatch::patch_point(double U, double Omega, double a, double b, double psi) {
+  Point p;
+  p.sign = Omega < 0.0 ? -1.0 : 1.0;
+  p.psi = psi;
+  p.mu = b / a;
+  const double aw = a * std::abs(Omega);
+  p.t = aw > 0.0 ? aw / (aw + U) : 0.0;  // 1/(1 + U/(a|Omega|)), no overflow
+  return p;
+}
+
 PoleWatch::Point PoleWatch::point(const ContactState& c) const {
+  if (c.in_contact && c.a > 0.0) return patch_point(c.U, c.Omega, c.a, c.b, c.psi);
   Point p;
   p.sign = c.Omega < 0.0 ? -1.0 : 1.0;
   p.psi = c.psi;
-  if (c.in_contact && c.a > 0.0) {
-    p.mu = c.b / c.a;
-    const double aw = c.a * std::abs(c.Omega);
-    p.t = aw > 0.0 ? aw / (aw + c.U) : 0.0;  // 1/(1 + U/(a|Omega|)), no overflow
-  } else {
-    const double r_max = std::max(c.point.R_meridian, c.point.R_parallel);
-    const double r_min = std::min(c.point.R_meridian, c.point.R_parallel);
-    p.mu = r_max > 0.0 ? std::sqrt(r_min / r_max) : 1.0;
-    p.t = 0.0;
-  }
+  // Out of contact the patch has shrunk to nothing: s = inf, mu the limit of b/a.
+  const double r_max = std::max(c.point.R_meridian, c.point.R_parallel);
+  const double r_min = std::min(c.point.R_meridian, c.point.R_parallel);
+  p.mu = r_max > 0.0 ? std::sqrt(r_min / r_max) : 1.0;
+  p.t = 0.0;
   return p;
 }
 
@@ -46,17 +52,29 @@ std::array<double, 3> PoleWatch::denominators(const Point& p) const {
 
 void PoleWatch::set_reference(const ContactState& c) {
   if (!active_) return;
-  ref_ = point(c);
+  set_reference(point(c));
+}
+
+void PoleWatch::set_reference(const Point& p) {
+  if (!active_) return;
+  ref_ = p;
   ref_den_ = denominators(ref_);
 }
 
 int PoleWatch::crossing(const ContactState& c) const {
   if (!active_) return -1;
-  const Point p = point(c);
+  return crossing(point(c));
+}
+
+int PoleWatch::crossing(const Point& p) const {
+  if (!active_) return -1;
   const std::array<double, 3> d = denominators(p);
   for (int i = 0; i < 3; ++i) {
     const std::size_t j = static_cast<std::size_t>(i);
-    if (std::isnan(ref_den_[j]) || std::isnan(d[j]) || ref_den_[j] == 0.0) continue;  // nothing to compare
+    if (std::isnan(ref_den_[j]) || std::isnan(d[j])) continue;  // nothing to compare
+    // The last accepted state lies on the pole (the integrator closing in on it lands there at
+    // rounding level): no move from it may be accepted, or the run would cross the pole unseen.
+    if (ref_den_[j] == 0.0) return i;
     if (sign_of(d[j]) == sign_of(ref_den_[j])) continue;
     if (d[j] == 0.0 || passes_through_zero(ref_, p, i)) return i;
   }
@@ -92,7 +110,10 @@ bool PoleWatch::passes_through_zero(const Point& from, const Point& to, int whic
       dhi = dm;
     }
   }
-  return std::max(std::abs(dlo), std::abs(dhi)) < std::min(std::abs(d0), std::abs(d1));
+  // Through infinity |D| rises inside the segment above its values at both ends; anything else is
+  // a pole, including a sign change at rounding level, where the bracket's |D| is noise as large
+  // as the ends' (the integrator closing in on a pole ends there).
+  return !(std::min(std::abs(dlo), std::abs(dhi)) > std::max(std::abs(d0), std::abs(d1)));
 }
 
 const char* PoleWatch::output_name(int which) {

@@ -17,8 +17,10 @@
 // infinity (e.g. the printed a4 = -8/(3 mu^(3/4) pi d6) when psi passes 0 or pi/2 and d6 changes
 // sign: the output goes through 0 and stays smooth). A sign change between two states is
 // classified by bisection on the straight segment between their points (psi along the shorter
-// arc, modulo pi): it is a pole when |D| at the final bracket is smaller than at both ends, and not
-// one when it is larger or when a point without denominator (NaN) lies on the way.
+// arc, modulo pi): it passes through infinity when |D| at the final bracket is larger than at both
+// ends or when a point without denominator (NaN) lies on the way, and is a pole otherwise (|D|
+// falls inside, or, at rounding level, cannot be told apart: the integrator closing in on a pole
+// ends with both states within rounding of it). A reference exactly on a pole lets nothing leave.
 
 #include <array>
 
@@ -43,17 +45,21 @@ class PoleWatch {
     double sign = 1.0;   ///< sign of Omega (+1 when Omega = 0)
   };
   [[nodiscard]] Point point(const ContactState& c) const;
+  /// The point of a contact over a patch a >= b > 0 (a planar model's patch, dynamics/puck/).
+  [[nodiscard]] static Point patch_point(double U, double Omega, double a, double b, double psi);
 
   /// The denominators at a point (divided by (a Omega)^2; NaN where an output has none).
   [[nodiscard]] std::array<double, 3> denominators(const Point& p) const;
 
   /// The reference: the last accepted state of the run.
   void set_reference(const ContactState& c);
+  void set_reference(const Point& p);
 
   /// Which denominator passes through 0 between the reference and `c`: 0 (F1), 1 (F2), 2 (M), or
-  /// -1 for none. Cheap when no sign changes (one call of the law's pole_denominators); no
+  /// -1 for none. A reference exactly on a pole (a denominator = 0) lets nothing leave it. Cheap when no sign changes (one call of the law's pole_denominators); no
   /// allocation.
   [[nodiscard]] int crossing(const ContactState& c) const;
+  [[nodiscard]] int crossing(const Point& p) const;
 
   /// "F1", "F2", "M".
   [[nodiscard]] static const char* output_name(int which);

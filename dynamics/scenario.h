@@ -61,12 +61,20 @@ class ScenarioDocument {
   /// Parses TOML text; `source` names it in messages and gives the default scenario name.
   [[nodiscard]] static ScenarioDocument parse(std::string_view toml_text, const std::string& source);
 
-  /// The scenario with `overrides` applied, checked, its body built.
+  /// The scenario with `overrides` applied, checked, its body built. A file of another model
+  /// (`model = "puck"`) is an error naming the key `model`.
   [[nodiscard]] Scenario resolve(const std::vector<std::string>& overrides = {}) const;
   [[nodiscard]] const std::string& source() const { return source_; }
 
- private:
+  /// The top-level `model` after `overrides`: "body" (a body of revolution on a Hertz plane, also
+  /// when absent) or "puck" (dynamics/puck/). Another value is std::invalid_argument naming it.
+  [[nodiscard]] std::string model(const std::vector<std::string>& overrides = {}) const;
+
+  /// The parsed text (complete in dynamics/scenario_toml.h, for the models' own readers).
   struct Parsed;
+  [[nodiscard]] const Parsed& parsed() const { return *parsed_; }
+
+ private:
   ScenarioDocument(std::shared_ptr<const Parsed> parsed, std::string source);
   std::shared_ptr<const Parsed> parsed_;
   std::string source_;

@@ -1,8 +1,5 @@
 #include "dynamics/simulation.h"
 
-#include <gsl/gsl_errno.h>
-#include <gsl/gsl_odeiv2.h>
-
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -11,7 +8,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "dynamics/gsl_steppers.h"
+#include "dynamics/ode_stepping.h"
 #include "dynamics/pole_watch.h"
 #include "dynamics/step_sampler.h"
 #include "dynamics/tolerance_scales.h"
@@ -27,16 +24,6 @@ using support::message_number;
 
 // Why the last evaluation of the right-hand side failed.
 enum class RhsFailure { none, pole, nonfinite, law_error };
-
-// What the GSL callback needs; counts calls and records why an evaluation failed.
-struct Context {
-  const BodyOnPlane* sys = nullptr;
-  const PoleWatch* poles = nullptr;  // null when the law has none
-  long rhs_calls = 0;
-  RhsFailure last = RhsFailure::none;  // the outcome of the latest evaluation
-  int pole_output = -1;                // which denominator (PoleWatch::output_name) on a refusal
-  std::string message;                 // what went wrong, for the summary
-};
 
 // The friction at a state, in one line (for failure messages only).
 std::string describe_friction(const BodyOnPlane& sys, const StateVector& x) {
@@ -58,72 +45,63 @@ std::string describe_nonfinite(const BodyOnPlane& sys, double t, const StateVect
   return m + ": " + describe_friction(sys, x);
 }
 
-// The right-hand side as GSL calls it, for accepted steps and their trial stages alike. A state on
-// the far side of a pole of the law (dynamics/pole_watch.h) is refused like a non-finite one: GSL
-// then halves the step, so no accepted step and no stage of it crosses the pole.
-int rhs(double t, const double y[], double f[], void* params) {
-  auto& ctx = *static_cast<Context*>(params);
-  ++ctx.rhs_calls;
-  const StateVector x = Eigen::Map<const StateVector>(y);
-  if (!x.allFinite()) {
-    ctx.last = RhsFailure::nonfinite;
-    ctx.message = describe_nonfinite(*ctx.sys, t, x);
-    return GSL_FAILURE;
-  }
-  StateVector d;
-  try {
-    const ContactState c = ctx.sys->contact_state(x);
-    if (ctx.poles) {
-      const int crossed = ctx.poles->crossing(c);
-      if (crossed >= 0) {
-        ctx.last = RhsFailure::pole;
-        ctx.pole_output = crossed;
-        return GSL_FAILURE;
-      }
-    }
-    ctx.sys->derivatives(x, c, d);
-  } catch (const std::exception& e) {
-    ctx.last = RhsFailure::law_error;
-    ctx.message = std::string("at t = ") + message_number(t) + " s: " + e.what();
-    return GSL_EBADFUNC;
-  }
-  if (!d.allFinite()) {
-    ctx.last = RhsFailure::nonfinite;
-    ctx.message = describe_nonfinite(*ctx.sys, t, x);
-    return GSL_FAILURE;
-  }
-  ctx.last = RhsFailure::none;
-  Eigen::Map<StateVector> out(f);
-  out = d;
-  return GSL_SUCCESS;
-}
+// The right-hand side as the stepping core calls it, for accepted steps and their trial stages
+// alike; counts calls and records why an evaluation failed. A state on the far side of a pole of
+// the law (dynamics/pole_watch.h) is refused like a non-finite one: GSL then halves the step, so
+// no accepted step and no stage of it crosses the pole.
+class BodyRhs final : public OdeRhs {
+ public:
+  BodyRhs(const BodyOnPlane& sys, const PoleWatch* poles) : sys_(sys), poles_(poles) {}
 
-struct DriverDeleter {
-  void operator()(gsl_odeiv2_driver* d) const { gsl_odeiv2_driver_free(d); }
+  RhsStatus operator()(double t, const double* y, double* f) override {
+    ++rhs_calls;
+    const StateVector x = Eigen::Map<const StateVector>(y);
+    if (!x.allFinite()) {
+      last = RhsFailure::nonfinite;
+      message = describe_nonfinite(sys_, t, x);
+      return RhsStatus::retry;
+    }
+    StateVector d;
+    try {
+      const ContactState c = sys_.contact_state(x);
+      if (poles_) {
+        const int crossed = poles_->crossing(c);
+        if (crossed >= 0) {
+          last = RhsFailure::pole;
+          pole_output = crossed;
+          return RhsStatus::retry;
+        }
+      }
+      sys_.derivatives(x, c, d);
+    } catch (const std::exception& e) {
+      last = RhsFailure::law_error;
+      message = std::string("at t = ") + message_number(t) + " s: " + e.what();
+      return RhsStatus::stop;
+    }
+    if (!d.allFinite()) {
+      last = RhsFailure::nonfinite;
+      message = describe_nonfinite(sys_, t, x);
+      return RhsStatus::retry;
+    }
+    last = RhsFailure::none;
+    Eigen::Map<StateVector> out(f);
+    out = d;
+    return RhsStatus::ok;
+  }
+
+  long rhs_calls = 0;
+  RhsFailure last = RhsFailure::none;  // the outcome of the latest evaluation
+  int pole_output = -1;                // which denominator (PoleWatch::output_name) on a refusal
+  std::string message;                 // what went wrong, for the summary
+
+ private:
+  const BodyOnPlane& sys_;
+  const PoleWatch* poles_;  // null when the law has none
 };
 
 Threshold given(const char* key, double value, const char* unit) { return {key, value, unit, "given"}; }
 
 }  // namespace
-
-std::vector<std::string> integrator_methods() { return gsl_stepper_names(); }
-
-void IntegratorOptions::validate() const {
-  if (!gsl_stepper(method)) {
-    std::string list;
-    for (const auto& m : integrator_methods()) list += (list.empty() ? "" : ", ") + m;
-    throw std::invalid_argument("run.integrator = '" + method + "' is not a known stepper; known: " + list);
-  }
-  if (!(std::isfinite(abs_tol) && abs_tol > 0.0))
-    throw invalid_value("run.abs_tol", abs_tol, "it must be finite and > 0");
-  if (!(std::isfinite(rel_tol) && rel_tol >= 0.0))
-    throw invalid_value("run.rel_tol", rel_tol, "it must be finite and >= 0");
-  if (!(std::isfinite(initial_step) && initial_step > 0.0))
-    throw invalid_value("run.initial_step", initial_step, "it must be finite and > 0 s");
-  if (!(std::isfinite(max_step) && max_step >= 0.0))
-    throw invalid_value("run.max_step", max_step, "it must be finite and >= 0 s (0: no limit)");
-  if (max_steps <= 0) throw invalid_value("run.max_steps", static_cast<long long>(max_steps), "it must be > 0");
-}
 
 void RunOptions::validate() const {
   if (!(std::isfinite(t_end) && t_end > 0.0)) throw invalid_value("run.t_end", t_end, "it must be finite and > 0 s");
@@ -182,13 +160,8 @@ RunSummary simulate(const BodyOnPlane& sys, const StateVector& x0, const RunOpti
   s.abs_tol = io.abs_tol * abs_scale;
 
   PoleWatch poles(sys.law(), sys.plane().k);
-  Context ctx;
-  ctx.sys = &sys;
-  ctx.poles = poles.active() ? &poles : nullptr;
-  gsl_odeiv2_system system{&rhs, nullptr, StateLayout::kSize, &ctx};
-  std::unique_ptr<gsl_odeiv2_driver, DriverDeleter> driver(gsl_odeiv2_driver_alloc_scaled_new(
-      &system, gsl_stepper(io.method), io.initial_step, io.abs_tol, io.rel_tol, 1.0, 0.0, abs_scale.data()));
-  if (!driver) throw std::runtime_error("GSL could not allocate the integrator");
+  BodyRhs ctx(sys, poles.active() ? &poles : nullptr);
+  FreeStepper stepper(ctx, StateLayout::kSize, io, abs_scale.data());
   StepSampler sampler(io.method, sys);
 
   StateVector x = x0;
@@ -258,9 +231,8 @@ RunSummary simulate(const BodyOnPlane& sys, const StateVector& x0, const RunOpti
     step.f0 = step.f1;
     h = std::min(h, max_step);
     ctx.last = RhsFailure::none;
-    const int status =
-        gsl_odeiv2_evolve_apply(driver->e, driver->c, driver->s, &system, &t, options.t_end, &h, x.data());
-    if (status == GSL_SUCCESS) {
+    const StepOutcome outcome = stepper.advance(t, options.t_end, h, x.data());
+    if (outcome.kind == StepOutcome::accepted) {
       ++s.steps;
       if (!x.allFinite()) {
         x = step.x0;
@@ -271,7 +243,7 @@ RunSummary simulate(const BodyOnPlane& sys, const StateVector& x0, const RunOpti
       }
       step.t1 = t;
       step.x1 = x;
-      step.f1 = Eigen::Map<const StateVector>(driver->e->dydt_out);
+      step.f1 = Eigen::Map<const StateVector>(stepper.derivative_at_end());
 
       // Samples on the output grid inside (t0, t1], from the step (never by cutting it).
       for (;;) {
@@ -352,7 +324,7 @@ RunSummary simulate(const BodyOnPlane& sys, const StateVector& x0, const RunOpti
     // Failure: GSL already retried with ever smaller steps down to machine precision.
     x = step.x0;
     t = step.t0;
-    if (status == GSL_EBADFUNC) {
+    if (outcome.kind == StepOutcome::stopped_by_rhs) {
       stop(Termination::law_error, ctx.message);
     } else if (ctx.last == RhsFailure::pole) {
       stop(Termination::law_pole, "the denominator of " + std::string(PoleWatch::output_name(ctx.pole_output)) +
@@ -365,7 +337,7 @@ RunSummary simulate(const BodyOnPlane& sys, const StateVector& x0, const RunOpti
       stop(Termination::non_finite, ctx.message + " (no step size down to machine precision avoids it)");
     } else {
       stop(Termination::integrator_failure,
-           std::string("GSL: ") + gsl_strerror(status) + " (no step above machine precision meets the tolerance) at t = " +
+           "GSL: " + outcome.gsl_message + " (no step above machine precision meets the tolerance) at t = " +
                message_number(t) + " s; at that state " + describe_friction(sys, x));
     }
     break;
@@ -377,7 +349,7 @@ RunSummary simulate(const BodyOnPlane& sys, const StateVector& x0, const RunOpti
   s.rhs_calls = ctx.rhs_calls;
   s.sample_rhs_calls = sampler.rhs_calls();
   s.hermite_samples = sampler.hermite_fallbacks();
-  s.rejected_steps = static_cast<long>(driver->e->failed_steps);
+  s.rejected_steps = stepper.failed_steps();
   s.final_energy = sys.energy(x);
   s.wall_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
   return s;

@@ -37,6 +37,7 @@
 
 #include "dynamics/body_scales.h"
 #include "dynamics/equations_of_motion.h"
+#include "dynamics/integrator_options.h"
 #include "dynamics/observer.h"
 #include "dynamics/rest_event.h"
 #include "dynamics/settling.h"
@@ -44,24 +45,6 @@
 #include "dynamics/threshold.h"
 
 namespace frictionlab::dynamics {
-
-struct IntegratorOptions {
-  /// GSL odeiv2 stepper: rk8pd (default, embedded Runge-Kutta Prince-Dormand 8(9)), rkck, rkf45,
-  /// rk4, rk2, msadams. Implicit steppers need a Jacobian and are not offered.
-  std::string method = "rk8pd";
-  /// Dimensionless: component i may carry a local error of abs_tol * scale_i + rel_tol * |x_i|,
-  /// scale_i its magnitude in a motion of the body over its size (dynamics/tolerance_scales.h).
-  double abs_tol = 1e-9;
-  double rel_tol = 1e-9;       ///< relative local error per component
-  double initial_step = 1e-5;  ///< s, > 0
-  double max_step = 0.0;       ///< s; 0 = no limit
-  long max_steps = 10'000'000;  ///< accepted steps before the run stops with reason max-steps
-
-  void validate() const;  ///< std::invalid_argument naming the run.* key
-};
-
-/// The stepper names accepted by IntegratorOptions::method.
-[[nodiscard]] std::vector<std::string> integrator_methods();
 
 /// Default run.max_samples: 1e7 rows (~4.4 GB of trajectory.csv at ~440 bytes a row) is ten times
 /// what the paper's runs plan (t_end = 1000 s at output_dt = 1e-3 s).

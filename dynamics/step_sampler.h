@@ -25,22 +25,14 @@
 #include <string_view>
 
 #include "dynamics/equations_of_motion.h"
+#include "dynamics/ode_stepping.h"
 #include "dynamics/state.h"
 
 namespace frictionlab::dynamics {
 
-/// An accepted step: its ends and the derivatives there (x' = f(x)).
-struct AcceptedStep {
-  double t0 = 0.0;
-  StateVector x0;
-  StateVector f0;
-  double t1 = 0.0;
-  StateVector x1;
-  StateVector f1;
-};
-
-/// The cubic Hermite interpolant of the step at t in [t0, t1] (order 4, error <= h^4/384 max|x''''|).
-[[nodiscard]] StateVector cubic_hermite(const AcceptedStep& step, double t);
+/// An accepted step of the body: its ends and the derivatives there (x' = f(x)). Its cubic Hermite
+/// interpolant is cubic_hermite(step, t) (dynamics/ode_stepping.h).
+using AcceptedStep = AcceptedStepOf<StateVector>;
 
 class StepSampler {
  public:

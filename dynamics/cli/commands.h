@@ -12,5 +12,7 @@ void register_accuracy_command(CLI::App& app);  // accuracy_command.cpp
 void register_paper_command(CLI::App& app);     // paper_command.cpp
 void register_ensemble_command(CLI::App& app);  // ensemble_command.cpp
 void register_calibrate_command(CLI::App& app); // calibrate_command.cpp
+void register_puck_study_command(CLI::App& app);  // puck_study_command.cpp
+void register_tippe_top_command(CLI::App& app);   // tippe_top_command.cpp
 
 }  // namespace frictionlab::cli

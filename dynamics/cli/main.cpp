@@ -102,6 +102,8 @@ int main(int argc, char** argv) {
   frictionlab::cli::register_paper_command(app);
   frictionlab::cli::register_ensemble_command(app);
   frictionlab::cli::register_calibrate_command(app);
+  frictionlab::cli::register_puck_study_command(app);
+  frictionlab::cli::register_tippe_top_command(app);
   // A file-size limit (ulimit -f) is then an error of the write that hits it, reported like a
   // full disk, instead of a signal that kills the process mid-row.
   std::signal(SIGXFSZ, SIG_IGN);

@@ -1,5 +1,6 @@
 // `frictionlab simulate SCENARIO.toml [--law NAME] [--set key=value]... --out DIR`: one run of the
-// body-on-plane dynamics (docs/dynamics.md). Writes DIR/trajectory.csv, DIR/summary.json and
+// body-on-plane dynamics (docs/dynamics.md), or of the sliding-spinning puck for a scenario with
+// `model = "puck"` (docs/puck.md). Writes DIR/trajectory.csv, DIR/summary.json and
 // DIR/scenario.toml; prints one line on stdout. Exit codes:
 //   0  the run ended by t_end, rest or rolling;
 //   3  it stopped early (non-finite, law-error, integrator-failure, max-steps, interrupted by
@@ -18,6 +19,7 @@
 #include <vector>
 
 #include "dynamics/cli/commands.h"
+#include "dynamics/puck/puck_scenario_run.h"
 #include "dynamics/scenario.h"
 #include "dynamics/scenario_run.h"
 #include "friction/registry.h"
@@ -72,6 +74,56 @@ struct SimulateOptions {
   std::string out;
 };
 
+// The progress bar as the puck's observer.
+class PuckProgress final : public dynamics::puck::PuckObserver {
+ public:
+  explicit PuckProgress(ProgressBar& bar) : bar_(bar) {}
+  void sample(const dynamics::puck::PuckSample&) override {}
+  void step(double t) override { bar_.step(t); }
+
+ private:
+  ProgressBar& bar_;
+};
+
+// Exit code and the lines on stdout and stderr, the same for every model.
+void report(const std::string& name, dynamics::Termination reason, const std::string& message, double t_final,
+            long steps, long rhs_calls, double wall_time, const std::string& output_error,
+            const std::filesystem::path& trajectory, const std::filesystem::path& summary) {
+  const std::string why(dynamics::to_string(reason));
+  if (!output_error.empty())
+    throw support::OutputError(output_error + "; the run stopped at t = " + support::message_number(t_final) + " s (" +
+                               why + "), see " + summary.string());
+  std::printf("%s: %s at t = %s s; %ld steps, %ld RHS calls, %s s wall; wrote %s, %s\n", name.c_str(), why.c_str(),
+              support::significant(t_final, 6).c_str(), steps, rhs_calls, support::significant(wall_time, 3).c_str(),
+              trajectory.c_str(), summary.c_str());
+  const bool normal = reason == dynamics::Termination::t_end || reason == dynamics::Termination::rest ||
+                      reason == dynamics::Termination::rolling;
+  if (!normal) {
+    std::fprintf(stderr, "frictionlab: simulate: the run stopped early (%s): %s\n", why.c_str(),
+                 support::one_line(message).c_str());
+    throw CLI::RuntimeError(kExitStoppedEarly);
+  }
+}
+
+void run_puck(const dynamics::puck::PuckScenario& scenario, const std::string& out) {
+  std::unique_ptr<ProgressBar> bar;
+  std::unique_ptr<PuckProgress> progress;
+  if (isatty(STDERR_FILENO)) {
+    bar = std::make_unique<ProgressBar>(scenario.run.t_end);
+    progress = std::make_unique<PuckProgress>(*bar);
+  }
+  dynamics::puck::PuckScenarioRun result;
+  {
+    const support::InterruptGuard interrupts;
+    result = dynamics::puck::run_puck_scenario(scenario, out, progress.get(), &interrupts.flag());
+  }
+  progress.reset();
+  bar.reset();
+  const auto& s = result.summary;
+  report(scenario.name, s.reason, s.message, s.t_final, s.steps, s.rhs_calls, s.wall_time, result.output_error,
+         result.trajectory_csv, result.summary_json);
+}
+
 void run(const SimulateOptions& opt) {
   std::vector<std::string> overrides = opt.set;
   if (!opt.law.empty()) {
@@ -83,7 +135,12 @@ void run(const SimulateOptions& opt) {
     }
     overrides.push_back("contact.law=" + opt.law);
   }
-  const dynamics::Scenario scenario = dynamics::load_scenario(opt.scenario, overrides);
+  const dynamics::ScenarioDocument document = dynamics::ScenarioDocument::read(opt.scenario);
+  if (document.model(overrides) == "puck") {
+    run_puck(dynamics::puck::resolve_puck(document, overrides), opt.out);
+    return;
+  }
+  const dynamics::Scenario scenario = document.resolve(overrides);
 
   std::unique_ptr<ProgressBar> bar;
   if (isatty(STDERR_FILENO)) bar = std::make_unique<ProgressBar>(scenario.run.t_end);
@@ -96,28 +153,16 @@ void run(const SimulateOptions& opt) {
   bar.reset();
 
   const dynamics::RunSummary& s = result.summary;
-  const std::string reason(dynamics::to_string(s.reason));
-  if (!result.output_error.empty())
-    throw support::OutputError(result.output_error + "; the run stopped at t = " + support::message_number(s.t_final) +
-                               " s (" + reason + "), see " + result.summary_json.string());
-  std::printf("%s: %s at t = %s s; %ld steps, %ld RHS calls, %s s wall; wrote %s, %s\n", scenario.name.c_str(),
-              reason.c_str(), support::significant(s.t_final, 6).c_str(), s.steps, s.rhs_calls,
-              support::significant(s.wall_time, 3).c_str(), result.trajectory_csv.c_str(),
-              result.summary_json.c_str());
-  const bool normal = s.reason == dynamics::Termination::t_end || s.reason == dynamics::Termination::rest ||
-                      s.reason == dynamics::Termination::rolling;
-  if (!normal) {
-    std::fprintf(stderr, "frictionlab: simulate: the run stopped early (%s): %s\n", reason.c_str(),
-                 support::one_line(s.message).c_str());
-    throw CLI::RuntimeError(kExitStoppedEarly);
-  }
+  report(scenario.name, s.reason, s.message, s.t_final, s.steps, s.rhs_calls, s.wall_time, result.output_error,
+         result.trajectory_csv, result.summary_json);
 }
 
 }  // namespace
 
 void register_simulate_command(CLI::App& app) {
   auto opt = std::make_shared<SimulateOptions>();
-  auto* cmd = app.add_subcommand("simulate", "Integrate the motion of a body of revolution on a Hertz plane");
+  auto* cmd = app.add_subcommand(
+      "simulate", "Integrate the motion of a body of revolution on a Hertz plane, or of a puck (model = \"puck\")");
   cmd->add_option("scenario", opt->scenario, "Scenario file (TOML; see docs/dynamics.md)")->required();
   cmd->add_option("--law", opt->law, "Friction law (overrides contact.law; see `frictionlab laws`)");
   cmd->add_option("--set", opt->set, "Override a scenario key, e.g. --set run.t_end=2 (repeatable)")

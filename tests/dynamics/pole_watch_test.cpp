@@ -7,6 +7,7 @@
 
 #include "friction/pade_printed_law.h"
 #include "friction/registry.h"
+#include "tests/dynamics/test_support.h"
 
 // Counts heap allocations in this test program (the watch runs inside the right-hand side).
 #include "bench/allocation_counter.h"
@@ -119,6 +120,45 @@ TEST(DynPoleWatch, ASignChangeThroughInfinityIsNoPole) {
   // The same at psi = pi/2, where sin 2psi changes sign too.
   w.set_reference(in_contact(5.0, std::numbers::pi / 2 - 0.01));
   EXPECT_EQ(w.crossing(in_contact(5.0, std::numbers::pi / 2 + 0.01)), -1);
+}
+
+TEST(DynPoleWatch, AStateOnThePoleLetsNoStepLeaveIt) {
+  // An accepted state whose denominator is exactly 0 lies on the pole: no move from it may be
+  // accepted, on either side, or the run would step across the pole unseen.
+  const testing::DeclaredPoleTestLaw law(3.0, true);  // F2's denominator s - 3; s = 3 is t = 1/4
+  PoleWatch w(law, 0.1);
+  const PoleWatch::Point on = PoleWatch::patch_point(3.0, 1.0, 1.0, 1.0, 0.0);
+  ASSERT_EQ(w.denominators(on)[1], 0.0);
+  w.set_reference(on);
+  EXPECT_EQ(w.crossing(PoleWatch::patch_point(3.0 + 1e-12, 1.0, 1.0, 1.0, 0.0)), 1);
+  EXPECT_EQ(w.crossing(PoleWatch::patch_point(3.0 - 1e-12, 1.0, 1.0, 1.0, 0.0)), 1);
+  // Off the pole nothing changes: the same side is no crossing.
+  w.set_reference(PoleWatch::patch_point(2.5, 1.0, 1.0, 1.0, 0.0));
+  EXPECT_EQ(w.crossing(PoleWatch::patch_point(2.9, 1.0, 1.0, 1.0, 0.0)), -1);
+  EXPECT_EQ(w.crossing(PoleWatch::patch_point(3.1, 1.0, 1.0, 1.0, 0.0)), 1);
+}
+
+TEST(DynPoleWatch, ACrossingAtRoundingLevelIsAPole) {
+  // The integrator closes in on a pole until the denominator at both ends of a step is at rounding
+  // level (~4e-16 here, s = (1 - t)/t); the bisection can then no longer show |D| falling inside the
+  // segment. Such a sign change must count as a pole: only |D| rising inside it (a passage through
+  // infinity) is none. Seen in a puck run stepping across a declared pole of a linear denominator.
+  const testing::DeclaredPoleTestLaw law(2.0, true);
+  PoleWatch w(law, 0.1);
+  int sign_changes = 0;
+  for (const double a : {0.03, 0.01, 1.0})
+    for (const double omega : {14.2088087729, 3.7, 100.0})
+      for (int i = 1; i <= 20; ++i)
+        for (int j = 1; j <= 20; ++j) {
+          const double aw = a * omega;
+          const PoleWatch::Point before = PoleWatch::patch_point(aw * (2.0 - i * 2.2e-16), omega, a, a, 0.0);
+          const PoleWatch::Point after = PoleWatch::patch_point(aw * (2.0 + j * 2.2e-16), omega, a, a, 0.0);
+          if (!(w.denominators(before)[1] < 0.0 && w.denominators(after)[1] > 0.0)) continue;
+          ++sign_changes;
+          w.set_reference(before);
+          EXPECT_EQ(w.crossing(after), 1) << a << " " << omega << " " << i << " " << j;
+        }
+  EXPECT_GT(sign_changes, 100);
 }
 
 TEST(DynPoleWatch, WatchingMakesNoHeapAllocation) {

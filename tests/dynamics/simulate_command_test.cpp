@@ -37,6 +37,26 @@ TEST(DynSimulateCommand, AShortRunWritesCsvAndSummary) {
   std::filesystem::remove_all(dir);
 }
 
+TEST(DynSimulateCommand, APuckScenarioRunsThePuck) {
+  const auto dir = fresh_dir("puck");
+  const auto r = run_frictionlab("simulate " + kScenarios + "puck-ellipse.toml --law pade-reconstructed --out " + dir.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("puck-ellipse: rest at t = "), std::string::npos) << r.out;
+  EXPECT_EQ(slurp(dir / "trajectory.csv").rfind("t,x,y,heading,vx,vy,omega,U,Omega,psi,F1,F2,M,ratio,energy,W_slide,W_spin,held\n", 0), 0u);
+  const auto json = nlohmann::json::parse(slurp(dir / "summary.json"));
+  EXPECT_EQ(json["model"], "puck");
+  EXPECT_EQ(json["law"], "pade-reconstructed");
+  EXPECT_EQ(json["termination"]["reason"], "rest");
+  EXPECT_TRUE(json["slip_stop_time"].is_number());
+  EXPECT_TRUE(json["terminal_ratio"].is_number());
+  EXPECT_NE(slurp(dir / "scenario.toml").find("model = 'puck'"), std::string::npos) << slurp(dir / "scenario.toml");
+  // A bad puck value is one line naming its key.
+  const auto bad = run_frictionlab("simulate " + kScenarios + "puck-ellipse.toml --set puck.b=1 --out " + dir.string());
+  EXPECT_EQ(bad.exit_code, 1);
+  EXPECT_NE(bad.err.find("--set puck.b=1: puck.b = 1 is invalid"), std::string::npos) << bad.err;
+  std::filesystem::remove_all(dir);
+}
+
 TEST(DynSimulateCommand, ALawSpecRunsAndIsEchoedVerbatim) {
   const auto dir = fresh_dir("spec");
   const auto r = run_frictionlab("simulate " + kScenarios + "sphere-spinning.toml --law exact:pressure=hertz "

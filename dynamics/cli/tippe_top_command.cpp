@@ -1,0 +1,84 @@
+// `frictionlab tippe-top --out DIR [--laws SPEC,...] [--scenario FILE] [--max-steps N] [--no-plots]`:
+// the tippe top with every friction law (docs/tippe-top.md, dynamics/tippe_top/tippe_top_study.h):
+// gamma3 against time, inversion times, energy and Jellett checks; report, table and figures in DIR.
+
+#include <iostream>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "dynamics/cli/commands.h"
+#include "dynamics/paper/experiment_plan.h"
+#include "dynamics/tippe_top/tippe_top_study.h"
+#include "dynamics/tippe_top/tippe_top_study_report.h"
+#include "friction/support/number_format.h"
+
+namespace frictionlab::cli {
+namespace {
+
+struct TippeTopCommandOptions {
+  std::string out;
+  std::vector<std::string> laws;  // as split by CLI11 at commas
+  std::string scenario;
+  long max_steps = dynamics::tippe_top::TippeTopStudyOptions{}.max_steps;
+  bool no_plots = false;
+};
+
+// Law specs may hold commas between their key=value pairs ("NAME:k1=v1,k2=v2"): a piece with '='
+// and no ':' continues the spec before it (a law's name never contains '=').
+std::vector<std::string> law_specs(const std::vector<std::string>& pieces) {
+  std::vector<std::string> specs;
+  for (const auto& p : pieces) {
+    if (!specs.empty() && p.find('=') != std::string::npos && p.find(':') == std::string::npos)
+      specs.back() += "," + p;
+    else
+      specs.push_back(p);
+  }
+  return specs;
+}
+
+void run(const TippeTopCommandOptions& opt, const std::string& command) {
+  if (opt.out.empty()) throw std::invalid_argument("--out is empty: name the output folder");
+  dynamics::tippe_top::TippeTopStudyOptions so;
+  so.laws = law_specs(opt.laws);
+  so.max_steps = opt.max_steps;
+  so.scenario = opt.scenario.empty() ? dynamics::paper::default_scenario_dir() / "tippe-top.toml"
+                                     : std::filesystem::path(opt.scenario);
+  const auto results = dynamics::tippe_top::run_tippe_top_study(so);
+  const auto problems = dynamics::tippe_top::write_tippe_top_study(results, opt.out, command, !opt.no_plots);
+  for (const auto& p : problems) std::cerr << "frictionlab: tippe-top: " << p << std::endl;
+  std::cout << "tippe-top: " << results.runs.size() << " laws in " << support::fixed(results.wall_time, 1)
+            << " s; wrote " << (std::filesystem::path(opt.out) / "tippe-top.md").string() << std::endl;
+}
+
+}  // namespace
+
+void register_tippe_top_command(CLI::App& app) {
+  auto opt = std::make_shared<TippeTopCommandOptions>();
+  auto* cmd = app.add_subcommand("tippe-top",
+                                 "The tippe top with every friction law: gamma3 against time, inversion times, energy\n"
+                                 "and Jellett's quantity (docs/tippe-top.md)");
+  cmd->add_option("--out", opt->out, "output folder (created; existing files are replaced)")->required();
+  cmd->add_option("--laws", opt->laws,
+                  "comma-separated law specs (default: every registered law that is not slow, and decoupled, "
+                  "decoupled:r_spin=0 where the registry has them)")
+      ->delimiter(',');
+  cmd->add_option("--scenario", opt->scenario, "the tippe-top scenario (default: the shipped tippe-top.toml)");
+  cmd->add_option("--max-steps", opt->max_steps, "accepted steps allowed per run (a chattering law ends max-steps)");
+  cmd->add_flag("--no-plots", opt->no_plots, "write the gnuplot data and scripts but do not run gnuplot");
+  cmd->callback([opt] {
+    std::ostringstream line;
+    line << "frictionlab tippe-top --out " << opt->out;
+    if (!opt->laws.empty()) {
+      line << " --laws ";
+      for (std::size_t i = 0; i < opt->laws.size(); ++i) line << (i ? "," : "") << opt->laws[i];
+    }
+    if (!opt->scenario.empty()) line << " --scenario " << opt->scenario;
+    if (opt->max_steps != dynamics::tippe_top::TippeTopStudyOptions{}.max_steps) line << " --max-steps " << opt->max_steps;
+    if (opt->no_plots) line << " --no-plots";
+    run(*opt, line.str());
+  });
+}
+
+}  // namespace frictionlab::cli

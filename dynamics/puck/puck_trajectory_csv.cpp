@@ -1,0 +1,66 @@
+#include "dynamics/puck/puck_trajectory_csv.h"
+
+#include <cmath>
+#include <limits>
+
+#include "friction/support/number_format.h"
+
+namespace frictionlab::dynamics::puck {
+namespace {
+
+void put(std::string& line, double x) {
+  support::append_shortest(line, x);
+  line.push_back(',');
+}
+
+}  // namespace
+
+PuckTrajectoryCsv::PuckTrajectoryCsv(const std::filesystem::path& file, double a) : file_(file), a_(a) {
+  std::string header;
+  for (std::size_t i = 0; i < kPuckTrajectoryColumns.size(); ++i) {
+    header += kPuckTrajectoryColumns[i];
+    header += i + 1 < kPuckTrajectoryColumns.size() ? ',' : '\n';
+  }
+  file_.append(header);
+  line_.reserve(400);
+}
+
+void PuckTrajectoryCsv::sample(const PuckSample& s) {
+  const PuckContact& c = s.contact;
+  line_.clear();
+  put(line_, s.t);
+  put(line_, position(s.x)[0]);
+  put(line_, position(s.x)[1]);
+  put(line_, heading(s.x));
+  put(line_, velocity(s.x)[0]);
+  put(line_, velocity(s.x)[1]);
+  put(line_, spin(s.x));
+  put(line_, c.U);
+  put(line_, c.Omega);
+  put(line_, c.psi);
+  put(line_, c.friction.F1);
+  put(line_, c.friction.F2);
+  put(line_, c.friction.M);
+  put(line_, c.Omega != 0.0 ? c.U / (a_ * std::abs(c.Omega)) : std::numeric_limits<double>::infinity());
+  put(line_, s.energy);
+  put(line_, slide_work(s.x));
+  put(line_, spin_work(s.x));
+  line_ += static_cast<char>('0' + (s.holds.slip ? 1 : 0) + (s.holds.spin ? 2 : 0));
+  line_ += '\n';
+  try {
+    file_.append(line_);
+  } catch (const support::OutputError& e) {
+    throw OutputFailure(e.what());
+  }
+  ++rows_;
+}
+
+void PuckTrajectoryCsv::close() {
+  try {
+    file_.close();
+  } catch (const support::OutputError& e) {
+    throw OutputFailure(e.what());
+  }
+}
+
+}  // namespace frictionlab::dynamics::puck

@@ -1,0 +1,53 @@
+#pragma once
+// The puck's trajectory as CSV, one row per sample (dynamics/puck/puck_run.h), columns in this
+// order (SI units, the fixed horizontal frame; docs/puck.md §2):
+//
+//   t          s      time
+//   x, y       m      position of the centre
+//   heading    rad    angle from x to the patch's major axis
+//   vx, vy     m/s    velocity of the centre
+//   omega      1/s    spin
+//   U          m/s    slip speed |v| (0 once held)
+//   Omega      1/s    spin as the law sees it (0 once held)
+//   psi        rad    angle from the slip direction to the major axis, [0, pi)
+//   F1, F2     N      friction force, F = -F1 e1 - F2 e2
+//   M          N m    friction torque, -M z
+//   ratio      -      U/(a |Omega|) (inf when Omega = 0)
+//   energy     J      kinetic energy m v^2/2 + I omega^2/2
+//   W_slide    J      work done against sliding friction so far
+//   W_spin     J      work done against spinning friction so far
+//   held       -      0 none, 1 slip held at 0, 2 spin held, 3 both (dynamics/puck/puck_equations.h)
+//
+// Whole rows only, every write checked (support::RecordFile), as dynamics/trajectory_csv.h.
+
+#include <array>
+#include <filesystem>
+#include <string>
+#include <string_view>
+
+#include "dynamics/puck/puck_run.h"
+#include "friction/support/checked_output.h"
+
+namespace frictionlab::dynamics::puck {
+
+inline constexpr std::array<std::string_view, 18> kPuckTrajectoryColumns = {
+    "t", "x", "y", "heading", "vx", "vy", "omega", "U", "Omega", "psi", "F1", "F2", "M", "ratio",
+    "energy", "W_slide", "W_spin", "held"};
+
+class PuckTrajectoryCsv final : public PuckObserver {
+ public:
+  /// `a`: the patch's major semi-axis (for the ratio column). Throws support::OutputError if the
+  /// file cannot be created.
+  PuckTrajectoryCsv(const std::filesystem::path& file, double a);
+  void sample(const PuckSample& s) override;
+  void close();
+  [[nodiscard]] long rows() const { return rows_; }
+
+ private:
+  support::RecordFile file_;
+  double a_;
+  std::string line_;
+  long rows_ = 0;
+};
+
+}  // namespace frictionlab::dynamics::puck
