@@ -4,6 +4,7 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <array>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -36,8 +37,33 @@ py::object as_result(py::array_t<double>& a, bool scalar) {
   return std::move(a);
 }
 
+// Scalar inputs (Python floats and ints, NumPy float64 scalars) skip the arrays: one contact, the
+// same evaluate(), Python floats out. Returns false if an input is anything else.
+bool call_scalar(const Law& law, const std::array<py::handle, 7>& inputs, py::tuple& out) {
+  std::array<double, 7> v{};
+  for (std::size_t i = 0; i < 7; ++i) {
+    PyObject* o = inputs[i].ptr();
+    if (!PyFloat_Check(o) && !PyLong_Check(o)) return false;
+    v[i] = PyFloat_AsDouble(o);
+    if (v[i] == -1.0 && PyErr_Occurred()) {  // an int too large for a double: let NumPy say so
+      PyErr_Clear();
+      return false;
+    }
+  }
+  const friction::ContactInput c{v[0], v[1], v[2], v[3], v[4], v[5], v[6]};
+  friction::FrictionForces f;
+  {
+    const py::gil_scoped_release release;
+    f = law.law().evaluate(c);  // std::invalid_argument becomes ValueError, with the same message
+  }
+  out = py::make_tuple(f.F1, f.F2, f.M);
+  return true;
+}
+
 py::tuple call(const Law& law, py::handle U, py::handle Omega, py::handle a, py::handle b, py::handle psi,
                py::handle N, py::handle k) {
+  py::tuple scalar_result;
+  if (call_scalar(law, {U, Omega, a, b, psi, N, k}, scalar_result)) return scalar_result;
   const BroadcastInputs in = broadcast_inputs({U, Omega, a, b, psi, N, k});
   py::array_t<double> F1(in.shape), F2(in.shape), M(in.shape);
   double* f1 = F1.mutable_data();
