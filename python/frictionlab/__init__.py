@@ -14,11 +14,13 @@ docs/python.md is the guide; docs/model.md states the conventions (the direction
 sign of the spin).
 """
 
+from ._version import __version__
 from ._core import Law, laws
 from ._simulate import Interrupted, SimulationResult, simulate
 from ._accuracy import AccuracyResult, accuracy
 
 __all__ = [
+    "__version__",
     "Law",
     "laws",
     "simulate",

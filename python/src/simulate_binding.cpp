@@ -54,6 +54,12 @@ class Collector final : public dynamics::Observer {
     }
   }
 
+  /// After the run, with the GIL: a Ctrl-C that came after the last look (or inside a law written
+  /// in Python, which re-arms it) still counts.
+  void look_at_signals() {
+    if (!pending_ && PyErr_CheckSignals() != 0) pending_.emplace(py::error_already_set());
+  }
+
   /// The exception that stopped the run (KeyboardInterrupt, or the callback's), or None.
   [[nodiscard]] py::object pending() const { return pending_ ? pending_->value() : py::none(); }
   [[nodiscard]] std::array<std::vector<double>, kColumns>& columns() { return columns_; }
@@ -92,6 +98,7 @@ py::tuple run(const std::optional<std::string>& path, const std::string& text, c
     const py::gil_scoped_release release;
     (void)dynamics::run_scenario(scenario, out_dir, &collector, &cancel);
   }
+  collector.look_at_signals();
   py::dict trajectory;
   auto& columns = collector.columns();
   for (std::size_t i = 0; i < kColumns; ++i) {

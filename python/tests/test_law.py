@@ -148,3 +148,11 @@ def test_help_states_units():
         assert text in doc
     for f in (frictionlab.laws, frictionlab.simulate, frictionlab.accuracy):
         assert f.__doc__ and len(f.__doc__) > 200
+
+
+def test_version_is_the_projects():
+    import re
+    cmakelists = os.path.join(os.environ["FRICTIONLAB_DATA_DIR"], "..", "CMakeLists.txt")
+    with open(cmakelists) as f:
+        version = re.search(r"project\(frictionlab VERSION ([0-9.]+)", f.read()).group(1)
+    assert frictionlab.__version__ == version
