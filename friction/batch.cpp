@@ -171,6 +171,16 @@ OnError parse_on_error(std::string_view text) {
   throw std::invalid_argument("--on-error = '" + std::string(text) + "' is not a choice: use stop, skip or nan");
 }
 
+std::string csv_field(std::string_view text) {
+  if (text.find_first_of(",\"\r\n") == std::string_view::npos) return std::string(text);
+  std::string out = "\"";
+  for (const char c : text) {
+    if (c == '"') out += '"';
+    out += c;
+  }
+  return out + '"';
+}
+
 std::string format_forces(const FrictionForces& f) {
   std::string s;
   append_forces(s, f);
@@ -181,6 +191,9 @@ BatchSummary evaluate_csv(const std::vector<const FrictionLaw*>& laws, std::istr
                           const BatchOptions& options) {
   if (laws.empty()) throw std::invalid_argument("no friction law given");
   const bool law_column = laws.size() > 1;
+  // The law column's field per law, made once: the row loop allocates nothing.
+  std::vector<std::string> law_field;
+  for (const FrictionLaw* l : laws) law_field.push_back("," + csv_field(l->spec()));
 
   // The header: the first line that is not blank, after an optional byte-order mark.
   std::string header;
@@ -234,10 +247,10 @@ BatchSummary evaluate_csv(const std::vector<const FrictionLaw*>& laws, std::istr
     ++summary.bad;
     if (options.on_bad_row) options.on_bad_row(line_number, reason);
     if (options.on_error == OnError::skip) return;
-    for (const FrictionLaw* l : laws) {
-      if (law && l != law) continue;
+    for (std::size_t i = 0; i < laws.size(); ++i) {
+      if (law && laws[i] != law) continue;
       row.assign(line);
-      if (law_column) (row += ',') += l->name();
+      if (law_column) row += law_field[i];
       row += ",nan,nan,nan\n";
       write_checked(dest, row);
       ++summary.written;
@@ -262,16 +275,17 @@ BatchSummary evaluate_csv(const std::vector<const FrictionLaw*>& laws, std::istr
       continue;
     }
     const ContactInput input{v[0], v[1], v[2], v[3], v[4], v[5], v[6]};
-    for (const FrictionLaw* law : laws) {
+    for (std::size_t i = 0; i < laws.size(); ++i) {
+      const FrictionLaw* law = laws[i];
       FrictionForces forces;
       try {
         forces = law->evaluate(input);
       } catch (const std::invalid_argument& e) {
-        bad_row(number, (law_column ? std::string(law->name()) + ": " : std::string()) + e.what(), law);
+        bad_row(number, (law_column ? std::string(law->spec()) + ": " : std::string()) + e.what(), law);
         continue;
       }
       row.assign(line);
-      if (law_column) (row += ',') += law->name();
+      if (law_column) row += law_field[i];
       row += ',';
       append_forces(row, forces);
       row += '\n';

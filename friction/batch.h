@@ -6,7 +6,8 @@
 // untouched), then one contact per line; blank lines are skipped. Numbers are C locale decimals
 // (a leading '+' allowed); one outside the double range ("1e999", "1e-400") is named as such.
 //
-// Output: every input column as it was, then (with more than one law) a `law` column, then F1, F2,
+// Output: every input column as it was, then (with more than one law) a `law` column naming each
+// law by its spec (FrictionLaw::spec(), quoted if it holds a comma), then F1, F2,
 // M printed with 17 significant digits (lossless for doubles). Rows come in input order; with
 // several laws, each input row gives one output row per law, in the order the laws are given.
 //
@@ -64,6 +65,10 @@ BatchSummary evaluate_csv(const std::vector<const FrictionLaw*>& laws, std::istr
 
 /// One law, OnError::stop. Returns the number of rows evaluated.
 std::size_t evaluate_csv(const FrictionLaw& law, std::istream& in, std::ostream& out);
+
+/// `text` as one CSV field: as it is, or in double quotes (inner quotes doubled) if it holds a
+/// comma, a double quote or a line break, as a law spec with several parameters does.
+[[nodiscard]] std::string csv_field(std::string_view text);
 
 /// "F1,F2,M" of one evaluation, each with 17 significant digits.
 [[nodiscard]] std::string format_forces(const FrictionForces& f);

@@ -473,6 +473,11 @@ Result window_integral(double mu, double e2, double p, double q, double rho, dou
 
 }  // namespace
 
+std::vector<LawParameter> ExactLaw::parameters() {
+  return {LawParameter::choice("pressure", {"hertz"}, "hertz",
+                               "the normal pressure over the patch: hertz (elastic bodies)")};
+}
+
 LawPromises ExactLaw::promises() const {
   LawPromises p;
   p.F1_in_Omega = Parity::even;

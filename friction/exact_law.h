@@ -36,8 +36,10 @@
 // slip_ratio() (law.h), with no overflow or underflow of a|Omega| (s = +inf is pure sliding).
 
 #include <string_view>
+#include <vector>
 
 #include "friction/law.h"
+#include "friction/law_spec.h"
 
 namespace frictionlab::friction {
 
@@ -51,6 +53,9 @@ inline constexpr double kExactMinAxisRatio = 1e-12;
 class ExactLaw final : public FrictionLaw {
  public:
   ExactLaw() = default;
+
+  /// What a spec may set (friction/law_spec.h): pressure = hertz, the distribution over the patch.
+  [[nodiscard]] static std::vector<LawParameter> parameters();
 
   [[nodiscard]] std::string_view name() const override { return "exact"; }
   [[nodiscard]] LawPromises promises() const override;

@@ -9,6 +9,7 @@
 
 #include <string>
 #include <string_view>
+#include <utility>
 
 namespace frictionlab::friction {
 
@@ -68,7 +69,10 @@ struct LawPromises {
   bool psi_mirror = false;          ///< psi -> -psi flips the sign of F2 only
   bool dissipative = false;         ///< F1 U + M Omega >= 0: friction never adds energy
   bool bounded = false;             ///< F1^2 + F2^2 <= (kN)^2 and |M| <= kN a
-  bool exact_pure_spin = false;     ///< U = 0: M = (3/8) k N a E(e) sign(Omega), e^2 = 1 - mu^2
+  bool exact_pure_spin = false;     ///< U = 0: M = pure_spin_factor k N a E(e) sign(Omega),
+                                    ///< e^2 = 1 - mu^2
+  double pure_spin_factor = 3.0 / 8.0;  ///< of the law's pressure: 3/8 Hertz, 4/(3 pi) uniform,
+                                        ///< 1/2 flat punch (docs/pressure-models.md)
   double min_axis_ratio = 0.0;      ///< b/a below this is rejected with std::invalid_argument
   bool whole_domain = false;        ///< evaluates every input validate() accepts with
                                     ///< b/a >= min_axis_ratio, never throwing
@@ -85,6 +89,9 @@ class FrictionLaw {
   [[nodiscard]] virtual std::string_view name() const = 0;
   /// One line: what the law is and where it comes from.
   [[nodiscard]] virtual std::string_view summary() const = 0;
+  /// The spec this law was made from by make_law() (friction/registry.h), verbatim, e.g.
+  /// "exact:pressure=uniform"; name() for a law constructed directly. Outputs name a law by it.
+  [[nodiscard]] std::string_view spec() const { return spec_.empty() ? name() : std::string_view(spec_); }
 
   /// True if the law has denominators that can vanish at valid input (its singular set), which
   /// pole_denominators() then returns. Callers watch their signs (simulation events, accuracy
@@ -107,6 +114,10 @@ class FrictionLaw {
   FrictionLaw& operator=(const FrictionLaw&) = default;
 
  private:
+  /// Sets spec(): the registry's, which knows the spec a law was made from (found by ADL).
+  friend void set_law_spec(FrictionLaw& law, std::string spec) { law.spec_ = std::move(spec); }
+  std::string spec_;
+
   /// Evaluates on validated input.
   [[nodiscard]] virtual FrictionForces do_evaluate(const ContactInput& in) const = 0;
 };

@@ -39,20 +39,23 @@ constexpr std::array<const char*, 7> kHelp = {
 // Bad rows reported one line each on stderr (with --on-error skip or nan), then a count.
 constexpr std::size_t kMaxWarnings = 20;
 
-// The laws named in a comma-separated list, in its order; unknown, empty or repeated names throw.
+// The laws of a list of specs (friction/law_spec.h: separated by ';', or by ',' where the next
+// item is not KEY=VALUE), in its order; a bad spec, or one law given twice (even under two
+// spellings of its spec), throws.
 std::vector<std::unique_ptr<friction::FrictionLaw>> make_laws(const std::string& list) {
   std::vector<std::unique_ptr<friction::FrictionLaw>> laws;
-  std::size_t start = 0;
-  while (true) {
-    const std::size_t end = list.find(',', start);
-    const std::string name = list.substr(start, end == std::string::npos ? std::string::npos : end - start);
-    if (name.empty()) throw std::invalid_argument("--law '" + list + "' has an empty name: separate names by one comma");
-    for (const auto& law : laws) {
-      if (law->name() == name) throw std::invalid_argument("--law: law '" + name + "' is listed twice");
+  std::vector<std::string> canonical;
+  for (const auto& spec : friction::split_law_list(list)) {
+    const std::string c = friction::canonical_law_spec(spec);
+    for (std::size_t i = 0; i < canonical.size(); ++i) {
+      if (canonical[i] != c) continue;
+      throw std::invalid_argument(spec == laws[i]->spec()
+                                      ? "--law: law '" + spec + "' is listed twice"
+                                      : "--law: '" + spec + "' is the same law as '" + std::string(laws[i]->spec()) +
+                                            "', listed before it");
     }
-    laws.push_back(friction::make_law(name));
-    if (end == std::string::npos) break;
-    start = end + 1;
+    laws.push_back(friction::make_law(spec));
+    canonical.push_back(c);
   }
   return laws;
 }
@@ -126,7 +129,7 @@ void run(const FrictionOptions& opt) {
                                   *opt.value[4], *opt.value[5], *opt.value[6]};
   std::string text;
   for (const auto* law : laws) {
-    if (laws.size() > 1) (text += law->name()) += ',';
+    if (laws.size() > 1) (text += friction::csv_field(law->spec())) += ',';
     text += friction::format_forces(law->evaluate(in)) + '\n';
   }
   write_stdout(text);
@@ -145,7 +148,9 @@ void register_friction_command(CLI::App& app) {
       "order; with several laws a `law` column is added and each input row gives one row per law,\n"
       "in the order of --law. With --on-error stop nothing is written unless every row succeeds\n"
       "(the table is spooled to a temporary file, then copied to stdout)");
-  cmd->add_option("--law", opt->laws, "law name, or several separated by commas (see `frictionlab laws`)")
+  cmd->add_option("--law", opt->laws,
+                  "law spec (NAME or NAME:KEY=VALUE[,KEY=VALUE], see `frictionlab laws`), or several separated "
+                  "by ';' or by ','")
       ->capture_default_str();
   for (std::size_t i = 0; i < kNames.size(); ++i) {
     cmd->add_option(std::string("--") + kNames[i], opt->value[i], kHelp[i]);

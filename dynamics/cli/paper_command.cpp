@@ -17,6 +17,7 @@
 
 #include "dynamics/cli/commands.h"
 #include "dynamics/paper/experiment_job.h"
+#include "friction/law_spec.h"
 #include "friction/support/errors.h"
 #include "friction/support/interrupt_guard.h"
 #include "friction/support/number_format.h"
@@ -52,7 +53,7 @@ void run(const PaperCliOptions& opt) {
   paper::JobOptions job;
   job.plan.out_dir = opt.out;
   job.plan.scenario_dir = opt.scenarios.empty() ? paper::default_scenario_dir() : std::filesystem::path(opt.scenarios);
-  if (!opt.laws.empty()) job.plan.laws = paper::split_list(opt.laws, "--laws");
+  if (!opt.laws.empty()) job.plan.laws = friction::split_law_list(opt.laws);  // specs may hold commas
   if (!opt.eggs.empty()) job.plan.eggs = paper::split_list(opt.eggs, "--eggs");
   if (!opt.cases.empty()) job.plan.cases = paper::split_list(opt.cases, "--cases");
   job.plan.overrides = opt.set;
@@ -100,7 +101,8 @@ void register_paper_command(CLI::App& app) {
       "paper", "Reproduce the paper's experiments (cases a, b, c; both egg readings) with every law, in parallel, "
                "with figures and a report (docs/experiments.md)");
   cmd->add_option("--out", opt->out, "Output directory (created if needed)")->required();
-  cmd->add_option("--laws", opt->laws, "Laws, comma-separated (default: " + join(paper::default_laws()) + ")");
+  cmd->add_option("--laws", opt->laws,
+                  "Law specs, separated by ';' or ',' (default: " + join(paper::default_laws()) + ")");
   cmd->add_option("--eggs", opt->eggs, "Egg readings (default: " + join(paper::known_eggs()) + ")");
   cmd->add_option("--cases", opt->cases, "Cases (default: " + join(paper::known_cases()) + ")");
   cmd->add_option("--jobs", opt->jobs, "Runs in parallel (default 0: one per core)");

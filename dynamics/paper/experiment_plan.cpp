@@ -36,6 +36,22 @@ void check_names(const std::vector<std::string>& given, const std::vector<std::s
   }
 }
 
+// Laws are specs (friction/law_spec.h): each must make a law, none twice (two spellings of one
+// spec are the same law).
+void check_law_specs(const std::vector<std::string>& laws) {
+  if (laws.empty()) throw std::invalid_argument("--laws is empty: give at least one law (see `frictionlab laws`)");
+  std::vector<std::string> canonical;
+  for (const auto& law : laws) {
+    try {
+      canonical.push_back(friction::canonical_law_spec(law));
+    } catch (const std::invalid_argument& e) {
+      throw std::invalid_argument(std::string("--laws: ") + e.what());
+    }
+    if (std::find(canonical.begin(), canonical.end() - 1, canonical.back()) != canonical.end() - 1)
+      throw std::invalid_argument("--laws: '" + law + "' is given twice (the same law as an earlier item)");
+  }
+}
+
 // Three significant digits: 1e-9 * 0.1 is "1e-10", not "1.0000000000000002e-10".
 std::string tolerance(double x) { return support::significant(x, 3); }
 
@@ -58,9 +74,7 @@ const std::vector<std::string>& default_laws() {
 
 void PlanOptions::validate() const {
   if (out_dir.empty()) throw std::invalid_argument("--out is empty: give an output directory");
-  std::vector<std::string> law_names;
-  for (const auto& info : friction::list_laws()) law_names.push_back(info.name);
-  check_names(laws, law_names, "--laws");
+  check_law_specs(laws);
   check_names(eggs, known_eggs(), "--eggs");
   check_names(cases, known_cases(), "--cases");
 }
@@ -131,7 +145,7 @@ std::vector<RunSpec> plan_runs(const PlanOptions& options) {
         r.law = r.label = law;
         r.out_dir = group_dir / r.label;
         r.scenario = resolve(doc, r);  // throws on a bad --set
-        if (law == kReferenceLaw) reference = r.scenario;
+        if (friction::canonical_law_spec(law) == kReferenceLaw) reference = r.scenario;
         runs.push_back(std::move(r));
       }
       if (options.baseline && reference) {

@@ -23,12 +23,20 @@ std::size_t count_lines(const std::string& s) {
   return static_cast<std::size_t>(std::count(s.begin(), s.end(), '\n'));
 }
 
-TEST(LawsCommand, ListsEveryLawOnOneLine) {
+TEST(LawsCommand, ListsEveryLawOnOneLineAndEachParameterBelowIt) {
   const auto r = run_frictionlab("laws");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto laws = friction::list_laws();
-  EXPECT_EQ(count_lines(r.out), laws.size());
-  for (const auto& law : laws) EXPECT_NE(r.out.find(law.name + " "), std::string::npos) << law.name;
+  std::size_t parameters = 0;
+  for (const auto& law : laws) {
+    EXPECT_NE(r.out.find("\n" + law.name + " "), std::string::npos) << law.name;
+    for (const auto& p : law.parameters) EXPECT_NE(r.out.find("    " + p.describe() + "\n"), std::string::npos) << p.key;
+    parameters += law.parameters.size();
+  }
+  EXPECT_GE(parameters, 1u);  // exact:pressure=...
+  // A header line saying how to write a spec, one line per law, one per parameter.
+  EXPECT_EQ(r.out.rfind("Laws, and the parameters a spec NAME:KEY=VALUE[,KEY=VALUE] may set", 0), 0u) << r.out;
+  EXPECT_EQ(count_lines(r.out), 1 + laws.size() + parameters);
 }
 
 TEST(FrictionCommand, SingleContactPrintsOneCsvLine) {
@@ -141,6 +149,33 @@ TEST(FrictionCommand, SeveralLawsAddALawColumn) {
   const auto twice = run_frictionlab("friction --law exact,exact " + file.path.string());
   EXPECT_EQ(twice.exit_code, 1);
   EXPECT_NE(twice.err.find("law 'exact' is listed twice"), std::string::npos) << twice.err;
+}
+
+TEST(FrictionCommand, LawSpecsWorkAndAreEchoedVerbatim) {
+  // A spec denotes a law with parameters; the output names each law by its spec as typed.
+  const TempCsv file("friction_specs", kTable);
+  const auto r = run_frictionlab("friction --law 'exact:pressure=hertz,pade-printed' " + file.path.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.out, library_output({"exact:pressure=hertz", "pade-printed"}, kTable));
+  EXPECT_NE(r.out.find(",exact:pressure=hertz,"), std::string::npos) << r.out;
+  // exact:pressure=hertz is exact: the same numbers.
+  const std::string contact = " --U 0.1 --Omega 10 --a 0.01 --b 0.004 --psi 0.3 --N 20 --k 0.1";
+  const auto plain = run_frictionlab("friction --law exact" + contact);
+  const auto spec = run_frictionlab("friction --law exact:pressure=hertz" + contact);
+  ASSERT_EQ(spec.exit_code, 0) << spec.err;
+  EXPECT_EQ(spec.out, plain.out);
+  const auto both = run_frictionlab("friction --law 'pade-printed;exact:pressure=hertz'" + contact);
+  ASSERT_EQ(both.exit_code, 0) << both.err;
+  EXPECT_EQ(both.out.substr(both.out.find('\n') + 1), "exact:pressure=hertz," + plain.out);
+  // The same law twice under two spellings, and a bad value: one line each.
+  const auto twice = run_frictionlab("friction --law exact,exact:pressure=hertz" + contact);
+  EXPECT_EQ(twice.exit_code, 1);
+  EXPECT_NE(twice.err.find("'exact:pressure=hertz' is the same law as 'exact'"), std::string::npos) << twice.err;
+  const auto bad = run_frictionlab("friction --law exact:pressure=flat" + contact);
+  EXPECT_EQ(bad.exit_code, 1);
+  EXPECT_EQ(count_lines(bad.err), 1u) << bad.err;
+  EXPECT_NE(bad.err.find("pressure = 'flat' is not allowed: pressure must be one of hertz"), std::string::npos)
+      << bad.err;
 }
 
 TEST(FrictionCommand, OnErrorSkipAndNanKeepGoingAndWarnOnStderr) {

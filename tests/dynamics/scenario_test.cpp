@@ -245,6 +245,17 @@ TEST(DynScenario, AnErrorIsBlamedOnWhatSetTheValue) {
   EXPECT_EQ(e.rfind("test.toml: contact.k = -1 is invalid", 0), 0u) << e;
 }
 
+// A law spec (friction/law_spec.h) works wherever a law name does, and is kept verbatim.
+TEST(DynScenario, TheLawMayBeASpecKeptVerbatim) {
+  const Scenario s = parse_scenario(replace(kGood, "k = 0.2", "k = 0.2\nlaw = \"exact:pressure=hertz\""), "test.toml");
+  EXPECT_EQ(s.law, "exact:pressure=hertz");
+  EXPECT_NE(s.resolved_toml.find("law = 'exact:pressure=hertz'"), std::string::npos) << s.resolved_toml;
+  EXPECT_EQ(parse_scenario(kGood, "test.toml", {"contact.law=exact:pressure=hertz"}).law, "exact:pressure=hertz");
+  const std::string e = error_of(kGood, {"contact.law=exact:pressure=flat"});
+  EXPECT_EQ(e.rfind("--set contact.law=exact:pressure=flat: contact.law = 'exact:pressure=flat' is invalid", 0), 0u) << e;
+  EXPECT_NE(e.find("pressure must be one of hertz"), std::string::npos) << e;
+}
+
 TEST(DynScenario, ShippedScenariosAreValid) {
   const std::filesystem::path dir = std::filesystem::path(FRICTIONLAB_SOURCE_DIR) / "data" / "scenarios";
   int n = 0;

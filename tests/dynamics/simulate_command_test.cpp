@@ -37,6 +37,22 @@ TEST(DynSimulateCommand, AShortRunWritesCsvAndSummary) {
   std::filesystem::remove_all(dir);
 }
 
+TEST(DynSimulateCommand, ALawSpecRunsAndIsEchoedVerbatim) {
+  const auto dir = fresh_dir("spec");
+  const auto r = run_frictionlab("simulate " + kScenarios + "sphere-spinning.toml --law exact:pressure=hertz "
+                                 "--set run.t_end=0.05 --set run.output_dt=0.05 --out " + dir.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto json = nlohmann::json::parse(slurp(dir / "summary.json"));
+  EXPECT_EQ(json["law"], "exact:pressure=hertz") << json.dump();
+  EXPECT_NE(slurp(dir / "scenario.toml").find("law = 'exact:pressure=hertz'"), std::string::npos);
+  const auto bad = run_frictionlab("simulate " + kScenarios + "sphere-spinning.toml --law exact:pressure=flat --out " +
+                                   dir.string() + "/bad");
+  EXPECT_EQ(bad.exit_code, 1);
+  EXPECT_NE(bad.err.find("--law exact:pressure=flat: "), std::string::npos) << bad.err;
+  EXPECT_NE(bad.err.find("one of hertz"), std::string::npos) << bad.err;
+  std::filesystem::remove_all(dir);
+}
+
 TEST(DynSimulateCommand, BadInputGivesOneLineAndNonZeroExit) {
   const auto dir = fresh_dir("bad");
   for (const std::string& args :

@@ -19,6 +19,7 @@
 
 #include "friction/pade_printed_law.h"
 #include "friction/pade_reconstructed_law.h"
+#include "friction/registry.h"
 
 namespace frictionlab::friction {
 namespace {
@@ -171,6 +172,42 @@ TEST(EvaluateCsv, SeveralLawsAddALawColumnOneRowPerLawInTheOrderGiven) {
   EXPECT_EQ(out.str(), "id,U,Omega,a,b,psi,N,k,law,F1,F2,M\n" + row("r1,1,2,1,0.5,0.3,1,1", reconstructed, c1) +
                            row("r1,1,2,1,0.5,0.3,1,1", printed, c1) + row("r2,0.5,-1,1,0.2,1.1,2,0.5", reconstructed, c2) +
                            row("r2,0.5,-1,1,0.2,1.1,2,0.5", printed, c2));
+}
+
+TEST(EvaluateCsv, TheLawColumnNamesEachLawByItsSpecAsOneCsvField) {
+  // A spec with several parameters has commas: the law column quotes it (RFC 4180), so that the
+  // table keeps its columns and split_csv_line reads the spec back whole.
+  LawRegistration r;
+  r.name = "test-two-parameters";
+  r.summary = "test law: reconstructed Pade under another name";
+  r.parameters = {LawParameter::number("x", 0.0, false, 1.0, false, "", 0.5, "", "unused"),
+                  LawParameter::number("y", 0.0, false, 1.0, false, "", 0.5, "", "unused")};
+  r.factory = [](const LawArguments&) {
+    struct Renamed final : FrictionLaw {
+      std::string_view name() const override { return "test-two-parameters"; }
+      std::string_view summary() const override { return "test"; }
+      FrictionForces do_evaluate(const ContactInput& in) const override { return PadeReconstructedLaw().evaluate(in); }
+    };
+    return std::make_unique<Renamed>();
+  };
+  register_law(r);
+  const auto two = make_law("test-two-parameters:x=0.25,y=1");
+  const auto plain = make_law("pade-printed");
+  std::istringstream in("U,Omega,a,b,psi,N,k\n1,2,1,0.5,0.3,1,1\n");
+  std::ostringstream out;
+  (void)evaluate_csv({two.get(), plain.get()}, in, out);
+  std::istringstream lines(out.str());
+  std::string header, first, second;
+  std::getline(lines, header);
+  std::getline(lines, first);
+  std::getline(lines, second);
+  EXPECT_EQ(first.rfind("1,2,1,0.5,0.3,1,1,\"test-two-parameters:x=0.25,y=1\",", 0), 0u) << first;
+  EXPECT_EQ(split_csv_line(first).size(), split_csv_line(header).size());
+  EXPECT_EQ(second.rfind("1,2,1,0.5,0.3,1,1,pade-printed,", 0), 0u) << second;
+  EXPECT_EQ(csv_field("exact:pressure=uniform"), "exact:pressure=uniform");
+  EXPECT_EQ(csv_field("a:x=1,y=2"), "\"a:x=1,y=2\"");
+  EXPECT_EQ(csv_field("say \"hi\""), "\"say \"\"hi\"\"\"");
+  EXPECT_TRUE(unregister_law("test-two-parameters"));
 }
 
 TEST(EvaluateCsv, OnErrorSkipOrNanKeepsTheGoodRowsAndReportsTheBadOnes) {

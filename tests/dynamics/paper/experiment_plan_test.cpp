@@ -58,13 +58,36 @@ TEST(PaperExperimentPlan, BadNamesAndOverridesAreRejectedBeforeAnythingRuns) {
       EXPECT_NE(std::string(e.what()).find(needle), std::string::npos) << e.what();
     }
   };
-  rejects([](PlanOptions& o) { o.laws = {"exact", "no-such-law"}; }, "unknown name 'no-such-law'");
+  rejects([](PlanOptions& o) { o.laws = {"exact", "no-such-law"}; }, "unknown friction law 'no-such-law'");
   rejects([](PlanOptions& o) { o.eggs = {"egg-boiled"}; }, "--eggs");
   rejects([](PlanOptions& o) { o.cases = {"a", "a"}; }, "given twice");
   rejects([](PlanOptions& o) { o.cases = {}; }, "--cases is empty");
   rejects([](PlanOptions& o) { o.out_dir.clear(); }, "--out");
   rejects([](PlanOptions& o) { o.overrides = {"run.t_edn=1"}; }, "t_edn");
   rejects([](PlanOptions& o) { o.scenario_dir = "/no/such/folder"; }, "does not exist");
+}
+
+TEST(PaperExperimentPlan, LawsMayBeSpecs) {
+  PlanOptions o = options();
+  o.eggs = {"egg-printed"};
+  o.cases = {"a"};
+  o.laws = friction::split_law_list("exact:pressure=hertz,pade-printed");
+  o.baseline = false;
+  const auto runs = plan_runs(o);
+  ASSERT_EQ(runs.size(), 2u);
+  EXPECT_EQ(runs[0].law, "exact:pressure=hertz");
+  EXPECT_EQ(runs[0].scenario->law, "exact:pressure=hertz");
+  EXPECT_EQ(runs[1].law, "pade-printed");
+  o.laws = {"exact", "exact:pressure=hertz"};  // the same law twice
+  EXPECT_THROW((void)plan_runs(o), std::invalid_argument);
+  o.laws = {"exact:pressure=flat"};
+  try {
+    (void)plan_runs(o);
+    ADD_FAILURE() << "accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("--laws: "), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("one of hertz"), std::string::npos) << e.what();
+  }
 }
 
 TEST(PaperExperimentPlan, SplitList) {
