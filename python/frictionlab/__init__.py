@@ -15,17 +15,21 @@ sign of the spin).
 """
 
 from ._version import __version__
-from ._core import Law, laws
+from ._core import Law, law_specs, laws
 from ._simulate import Interrupted, SimulationResult, simulate
 from ._accuracy import AccuracyResult, accuracy
+from ._custom_law import register_law, unregister_law
 
 __all__ = [
     "__version__",
     "Law",
     "laws",
+    "law_specs",
     "simulate",
     "SimulationResult",
     "Interrupted",
     "accuracy",
     "AccuracyResult",
+    "register_law",
+    "unregister_law",
 ]

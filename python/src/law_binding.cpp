@@ -84,6 +84,23 @@ py::tuple call(const Law& law, py::handle U, py::handle Omega, py::handle a, py:
   return py::make_tuple(as_result(F1, scalar), as_result(F2, scalar), as_result(M, scalar));
 }
 
+py::dict parameter_dict(const friction::LawParameter& p) {
+  py::dict d;
+  d["key"] = p.key;
+  d["kind"] = p.kind == friction::LawParameter::Kind::choice ? "choice" : "number";
+  if (p.kind == friction::LawParameter::Kind::choice) {
+    d["choices"] = p.choices;
+  } else {
+    d["min"] = p.min;
+    d["max"] = p.max;
+    d["unit"] = p.unit;
+  }
+  d["default"] = p.default_value.empty() ? py::object(py::none()) : py::object(py::str(p.default_value));
+  d["rule"] = p.rule();
+  d["doc"] = p.doc;
+  return d;
+}
+
 py::dict info_dict(const friction::LawInfo& info) {
   py::dict d;
   d["name"] = info.name;
@@ -91,6 +108,9 @@ py::dict info_dict(const friction::LawInfo& info) {
   d["reference"] = info.reference;
   d["slow"] = info.slow;
   d["has_poles"] = info.has_poles;
+  py::list parameters;
+  for (const auto& p : info.parameters) parameters.append(parameter_dict(p));
+  d["parameters"] = parameters;
   return d;
 }
 
@@ -109,14 +129,26 @@ Every registered friction law, in the registry's order (the reference law, ``exa
 Each entry is a dict with keys ``name`` (str, the spec to pass to :class:`Law`), ``summary``
 (one line: what the law is, its source and accuracy), ``reference`` (bool: the law every other
 law is measured against), ``slow`` (bool: milliseconds per call, a cross-check rather than a law
-for simulations) and ``has_poles`` (bool: the law has denominators that can vanish).)doc");
+for simulations), ``has_poles`` (bool: the law has denominators that can vanish) and
+``parameters``: what a spec ``NAME:KEY=VALUE[,KEY=VALUE]`` may set, each a dict with ``key``,
+``kind`` ("choice" with ``choices``, or "number" with ``min``, ``max`` and its SI ``unit``),
+``default`` (str or None), ``rule`` and ``doc``. Laws registered with register_law() come last.)doc");
+
+  m.def(
+      "law_specs", [] { return friction::list_law_specs(); },
+      R"doc(law_specs() -> list[str]
+
+Every registered law by name, each followed by its variants: the specs that set one choice
+parameter to a value other than its default (e.g. ``"exact:pressure=uniform"``).)doc");
 
   py::class_<Law>(m, "Law", R"doc(Law(spec)
 
 A law of coupled dry friction (sliding + spinning) over an elliptic Hertz contact patch.
 
 ``spec`` names a registered law (see :func:`laws`), e.g. ``"exact"``, ``"pade-printed"``,
-``"coulomb-decoupled"``; unknown names raise ValueError listing the known ones.
+``"coulomb-decoupled"``, optionally with parameters, ``"NAME:KEY=VALUE[,KEY=VALUE]"`` (e.g.
+``"exact:pressure=uniform"``; docs/extending.md); an unknown name, key or value raises
+ValueError naming it and what is allowed.
 
 Calling the law, ``law(U, Omega, a, b, psi, N, k)``, returns ``(F1, F2, M)``. SI units:
 
@@ -153,7 +185,7 @@ Evaluates the law. Inputs in SI units (U m/s, Omega 1/s, a and b m, psi rad, N i
 dimensionless), numbers or arrays broadcast together; returns F1 and F2 in newtons and M in
 newton metres, arrays of the broadcast shape (floats for scalar input). ValueError names the
 first element the law rejects and the rule it breaks.)doc")
-      .def_property_readonly("spec", &Law::spec, "The spec the law was made from (str).")
+      .def_property_readonly("spec", &Law::spec, "The spec the law was made from, verbatim (str).")
       .def_property_readonly("name", &Law::name, "The registered name of the law (str).")
       .def_property_readonly(
           "summary", [](const Law& l) { return l.info().summary; }, "One line: what the law is and where it comes from.")

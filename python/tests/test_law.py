@@ -47,7 +47,7 @@ def cli_forces(cli, tmp_path, law, contacts):
     return cols["F1"], cols["F2"], cols["M"]
 
 
-@pytest.mark.parametrize("law", [info["name"] for info in frictionlab.laws()])
+@pytest.mark.parametrize("law", frictionlab.law_specs())
 def test_every_law_equals_the_command_line_bit_for_bit(cli, tmp_path, law):
     slow = frictionlab.Law(law).slow
     contacts = random_contacts(8 if slow else 400, seed=7)
@@ -59,7 +59,8 @@ def test_every_law_equals_the_command_line_bit_for_bit(cli, tmp_path, law):
 
 
 def test_laws_lists_the_registry_with_summaries(cli):
-    listed = run_cli(cli, "laws").stdout.splitlines()
+    # `frictionlab laws`: a heading, then one line per law, its parameters indented below it.
+    listed = [line for line in run_cli(cli, "laws").stdout.splitlines()[1:] if not line.startswith(" ")]
     infos = frictionlab.laws()
     assert [line.split()[0] for line in listed] == [i["name"] for i in infos]
     for line, info in zip(listed, infos):
@@ -68,6 +69,17 @@ def test_laws_lists_the_registry_with_summaries(cli):
     law = frictionlab.Law("exact")
     assert (law.name, law.spec, law.reference, law.has_poles) == ("exact", "exact", True, False)
     assert frictionlab.Law("pade-printed").has_poles
+    # Variants are specs of the listed laws with one choice parameter set.
+    names = [i["name"] for i in infos]
+    specs = frictionlab.law_specs()
+    assert [s for s in specs if ":" not in s] == names
+    for spec in specs:
+        if ":" in spec:
+            name, setting = spec.split(":")
+            key, value = setting.split("=")
+            (param,) = [p for p in infos[names.index(name)]["parameters"] if p["key"] == key]
+            assert param["kind"] == "choice" and value in param["choices"] and value != param["default"]
+            assert frictionlab.Law(spec).spec == spec and frictionlab.Law(spec).name == name
 
 
 def test_broadcasting_follows_numpy():
@@ -138,6 +150,8 @@ def test_other_errors():
         law(1.0, "fast", 1.0, 1.0, 0.0, 1.0, 1.0)
     with pytest.raises(ValueError, match="unknown friction law 'nope'.*exact"):
         frictionlab.Law("nope")
+    with pytest.raises(ValueError, match="exact has no parameter 'n'"):
+        frictionlab.Law("exact:n=1")
     with pytest.raises(TypeError):
         law(1.0, 1.0)
 
