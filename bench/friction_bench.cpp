@@ -1,5 +1,7 @@
 // Cost of each friction law per evaluation, on one fixed seeded input set (bench/law_input_set.h),
-// with each law's largest error against the reference law (`exact`) on that set as counters.
+// with each law's largest error against the reference law (`exact`) on that set as counters. Every
+// spec of list_law_specs() is timed: `BM_law/exact:pressure=uniform` too (its counters are then the
+// difference between the pressure models, not an error).
 //
 //   build/bench/friction_bench                       # all laws
 //   build/bench/friction_bench --benchmark_filter='BM_law/(exact|pade-printed)$'
@@ -60,10 +62,10 @@ void register_law(const friction::LawInfo& info, const std::vector<friction::Con
   const bool slow = info.slow;
   auto set = std::make_shared<std::vector<friction::ContactInput>>(
       full.begin(), full.begin() + static_cast<std::ptrdiff_t>(slow ? kSlowLawSubset : full.size()));
-  std::shared_ptr<friction::FrictionLaw> law = friction::make_law(info.name);
+  std::shared_ptr<friction::FrictionLaw> law = friction::make_law(info.spec);
   const auto reference = friction::make_reference_law();
   const MaxErrors err = max_errors(*law, *reference, *set);
-  const std::string name = info.name;
+  const std::string name = info.spec;
 
   auto* b = benchmark::RegisterBenchmark(("BM_law/" + name).c_str(), [law, set, err](benchmark::State& state) {
     std::size_t i = 0;
@@ -92,7 +94,10 @@ void register_law(const friction::LawInfo& info, const std::vector<friction::Con
 
 int main(int argc, char** argv) {
   const auto set = frictionlab::bench::law_input_set();
-  for (const auto& info : frictionlab::friction::list_laws()) frictionlab::bench::register_law(info, set);
+  // Every law, and every variant of its choice parameters (e.g. each pressure model of `exact`).
+  for (const auto& spec : frictionlab::friction::list_law_specs()) {
+    frictionlab::bench::register_law(frictionlab::friction::law_info(spec), set);
+  }
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
   benchmark::RunSpecifiedBenchmarks();

@@ -18,11 +18,13 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <complex>
 #include <cstddef>
 #include <iomanip>
 #include <numbers>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
 
 namespace frictionlab::friction {
 namespace {
@@ -237,6 +239,19 @@ Result whole_period(const Moments& m, double mu, double e2, double p, double q) 
   return r;
 }
 
+// The same for the flat punch (p ~ (1 - r^2)^(-1/2)): the chord factor is D^0 = 1, the prefactor
+// (n + 1) B_n / pi = 1/2 and the chord's second moment 1/(2n + 3) = 1/2 (docs/pressure-models.md),
+// so G' is linear and H quadratic in (p, q).
+Result whole_period_punch(const Moments& m, double mu, double e2, double p, double q) {
+  const double mu2 = mu * mu;
+  Result r;
+  r.g1 = -0.5 * p * m.m20;
+  r.g2 = -0.5 * mu * q * m.m02;
+  r.h = 0.5 * (e2 * (q * q - p * p) * m.m22 +
+               0.5 * (m.m20 + mu2 * m.m02 - q * q * (m.m40 + mu2 * m.m22) - p * p * (m.m22 + mu2 * m.m04)));
+  return r;
+}
+
 // ---------------------------------------------------------------------------------------------
 // Composite Gauss-Legendre over t in [-T, T], t = tan(phi/2) (Weierstrass: no trigonometric
 // function per node), the direction being e(phi) = cos phi u0 + sin phi u1 with u1 = -J u0.
@@ -256,7 +271,7 @@ double bernstein_sigma(double x0, double x1, Point z) {
 }
 
 struct Singularities {
-  std::array<Point, 3> z{};
+  std::array<Point, 6> z{};
   int count = 0;
 };
 
@@ -398,6 +413,9 @@ double difficulty_sigma(double T, const Singularities& sing) {
 // ICR outside, the gap of directions that miss the patch,
 // e(phi) = cos phi n + sin phi c^, n = J c^, |phi| < acos(1/rho), with the same (continued)
 // integrand as the whole period, where D = 1 - rho^2 cos^2 phi < 0.
+// kPunch: the flat punch's integrand (chord factor 1 in place of D, prefactor 1/2, chord moment
+// 1/2); otherwise Hertz's.
+template <bool kPunch>
 Result gap_integral(double mu, double e2, double p, double q, double rho) {
   const double cx = p / rho;
   const double cy = q / rho;
@@ -416,19 +434,22 @@ Result gap_integral(double mu, double e2, double p, double q, double rho) {
     const double L = std::sqrt(C * C + mu * mu * S * S);
     const double iL = 1.0 / L;
     const double D = 1.0 - rho2 * cphi * cphi;
-    const double a = w * D * rho * sphi * iL;  // e.c~ = rho sin phi
+    const double chord = kPunch ? 1.0 : D;
+    const double a = w * chord * rho * sphi * iL;  // e.c~ = rho sin phi
     g1 += a * C;
     g2 += a * mu * S;
     const double X = -e2 * rho2 * S * C * cphi * sphi;  // e x c~ = -rho cos phi
-    h += w * D * (X * iL + 0.25 * D * L);
+    h += w * chord * (X * iL + (kPunch ? 0.5 : 0.25) * D * L);
   });
-  return {-0.75 * g1, -0.75 * g2, 0.75 * h};
+  const double k = kPunch ? 0.5 : 0.75;
+  return {-k * g1, -k * g2, k * h};
 }
 
 // ICR outside: the window of directions that hit the patch,
 // e(phi) = -cos phi c^ + sin phi n, |phi| < asin(1/rho), oriented from the ICR towards the patch.
 // The moment uses rho . (w/|w| + c'/|c'|) in place of rho . w/|w| (the same integral, since the
 // pressure's centroid is the centre), which removes a cancellation of O(s) terms to O(1/s).
+template <bool kPunch>
 Result window_integral(double mu, double e2, double p, double q, double rho, double s) {
   const double cx = p / rho;
   const double cy = q / rho;
@@ -462,20 +483,239 @@ Result window_integral(double mu, double e2, double p, double q, double rho, dou
     const double inv = 1.0 / (L * den);  // one division per node
     const double iL = inv * den;
     const double D = 1.0 - rho2 * sphi * sphi;
-    const double a = w * D * cphi * iL;
+    const double chord = kPunch ? 1.0 : D;
+    const double a = w * chord * cphi * iL;
     g1 += a * C;
     g2 += a * mu * S;
     const double one_plus = num * inv * L;
-    h += w * one_plus * D * (s * rho * cphi + L * (rho2 * cphi * cphi + 0.25 * D));
+    h += w * one_plus * chord * (s * rho * cphi + L * (rho2 * cphi * cphi + (kPunch ? 0.5 : 0.25) * D));
   });
-  return {0.75 * rho * g1, 0.75 * rho * g2, 0.75 * h};
+  const double k = kPunch ? 0.5 : 0.75;
+  return {k * rho * g1, k * rho * g2, k * h};
+}
+
+// ---------------------------------------------------------------------------------------------
+// Uniform pressure, p = N/(pi a b): by the divergence theorem (docs/pressure-models.md §3), with
+// w = rho - c, w/|w| = grad |w| and 3|w| = div(w |w|), the patch integrals become rim integrals.
+// Ellipse frame, units of a, Omega > 0, ICR c = s (sin psi, cos psi); rim rho(t) = (cos t, mu sin t),
+// outward n ds = (mu cos t, sin t) dt:
+//   G' = (1/(pi mu)) ∮ (|w| - |c|) n ds,
+//   H  = (1/(pi mu)) ∮ f [ (1/3) rho.n + (2/3) c.n ] ds,   f = |w| + chat.w,
+// any constant |c| and chat allowed (∮ n ds = 0; the pressure's centroid is the centre). Taken so
+// that no O(s) terms cancel: |w| - |c| = (|rho|^2 - 2 rho.c)/(|w| + |c|), and for |c| > 1 (ICR
+// outside the unit circle, hence the patch) chat = c/|c|, f = (chat x rho)^2/(|w| - chat.w) = O(1/s).
+
+// Above this imaginary distance a zero of |rho(t) - c|^2 does not split the rim.
+constexpr double kRimSplitDistance = 0.25;
+// No zero nearer than kRimSplitDistance: the periodic trapezoid rule with N = exponent/d nodes
+// (error ~ exp(-N d) times the integrand's growth in the strip), d capped so that N >= 12.
+constexpr double kRimTrapezoidExponent = 32.0;
+constexpr double kRimTrapezoidMaxDistance = 3.0;
+// Below this a zero is on the rim to round-off: a kink |t - x| sqrt(g), analytic on each side of
+// the split, so it is left out of the rule choice.
+constexpr double kRimOnEdge = 1e-14;
+
+struct RimZeros {
+  std::array<double, 4> x{};  // real parts
+  std::array<double, 4> d{};  // |imaginary parts|
+  int count = 0;
+};
+
+// The complex zeros t = x +- i d of |rho(t) - c|^2 = (cos t - c1)^2 + (mu sin t - c2)^2: with
+// z = e^(it), cos t - c1 = +-i (mu sin t - c2) reads
+// (1 -+ mu) z^2 - 2 (c1 -+ i c2) z + (1 +- mu) = 0.
+RimZeros rim_zeros(double mu, double c1, double c2) {
+  using Complex = std::complex<double>;
+  RimZeros out;
+  const auto add = [&](Complex z) {
+    const double r = std::abs(z);
+    if (!(r > 0.0) || !std::isfinite(r)) return;
+    const double d = std::abs(std::log(r));
+    if (d > 30.0) return;  // too far to matter
+    out.x[static_cast<std::size_t>(out.count)] = std::arg(z);
+    out.d[static_cast<std::size_t>(out.count)] = d;
+    ++out.count;
+  };
+  for (const double sg : {1.0, -1.0}) {
+    const Complex a(1.0 - sg * mu, 0.0);
+    const Complex b = -2.0 * Complex(c1, -sg * c2);
+    const Complex c(1.0 + sg * mu, 0.0);
+    const Complex disc = std::sqrt(b * b - 4.0 * a * c);
+    const Complex qp = -0.5 * (b + disc);
+    const Complex qm = -0.5 * (b - disc);
+    const Complex q = std::abs(qp) >= std::abs(qm) ? qp : qm;
+    if (std::abs(q) == 0.0) continue;
+    if (std::abs(a) > 0.0) add(q / a);
+    add(c / q);
+  }
+  return out;
+}
+
+// (|z - 1| + |z + 1|)/2 style singularity of a piece centred at m: the Weierstrass image
+// u = tan((t - m)/2) of t = x + i d, i.e. (sin D + i sinh d)/(cos D + cosh d), D = x - m.
+Point weierstrass_image(double x, double d, double m) {
+  const double D = std::remainder(x - m, 2.0 * kPi);
+  const double den = std::cos(D) + std::cosh(d);
+  return {std::sin(D) / den, std::sinh(d) / den};
+}
+
+// The rim integrands at one node (cos t, sin t) with weight wgt, accumulated into r.
+struct RimIntegrand {
+  double mu, c1, c2, cn, h1, h2;
+  bool use_hat;
+  void add(double ct, double st, double wgt, Result& r) const {
+    const double r1 = ct;
+    const double r2 = mu * st;
+    const double w1 = r1 - c1;
+    const double w2 = r2 - c2;
+    const double wn = std::sqrt(w1 * w1 + w2 * w2);
+    const double nx = mu * ct;
+    const double ny = st;
+    const double num = wgt * (r1 * r1 + r2 * r2 - 2.0 * (r1 * c1 + r2 * c2));
+    double gt = 0.0;
+    double f = wn;
+    if (use_hat) {  // one division for both quotients
+      const double cross = h1 * r2 - h2 * r1;
+      const double den = wn - (h1 * w1 + h2 * w2);
+      const double inv = 1.0 / ((wn + cn) * den);
+      gt = num * den * inv;
+      f = cross * cross * (wn + cn) * inv;
+    } else {
+      gt = num / (wn + cn);
+    }
+    r.g1 += gt * nx;
+    r.g2 += gt * ny;
+    r.h += wgt * f * (mu / 3.0 + (2.0 / 3.0) * (c1 * nx + c2 * ny));
+  }
+};
+
+Result uniform_rim(double mu, double c1, double c2) {
+  const RimZeros zeros = rim_zeros(mu, c1, c2);
+  const double cn = std::sqrt(c1 * c1 + c2 * c2);
+  const bool use_hat = cn > 1.0;
+  const RimIntegrand integrand{mu, c1, c2, cn, use_hat ? c1 / cn : 0.0, use_hat ? c2 / cn : 0.0, use_hat};
+  const double scale = 1.0 / (kPi * mu);
+  double d_min = kRimTrapezoidMaxDistance;
+  for (int k = 0; k < zeros.count; ++k) d_min = std::min(d_min, zeros.d[static_cast<std::size_t>(k)]);
+  if (d_min >= kRimSplitDistance) {
+    // No zero near the rim: the periodic trapezoid rule converges like exp(-N d_min); nodes by
+    // rotation (no trigonometric function per node).
+    const int n = 2 * static_cast<int>(std::ceil(0.5 * kRimTrapezoidExponent / d_min));
+    const double dt = 2.0 * kPi / n;
+    const double cd = std::cos(dt);
+    const double sd = std::sin(dt);
+    double ct = 1.0;
+    double st = 0.0;
+    Result r;
+    for (int i = 0; i < n; ++i) {
+      integrand.add(ct, st, dt, r);
+      const double c_next = ct * cd - st * sd;
+      st = st * cd + ct * sd;
+      ct = c_next;
+    }
+    return {scale * r.g1, scale * r.g2, scale * r.h};
+  }
+  // Split points: the real parts of near zeros, sorted, deduplicated (modulo 2 pi).
+  std::array<double, 4> split{};
+  int n_split = 0;
+  for (int k = 0; k < zeros.count; ++k) {
+    if (zeros.d[static_cast<std::size_t>(k)] >= kRimSplitDistance) continue;
+    const double x = zeros.x[static_cast<std::size_t>(k)];
+    bool seen = false;
+    for (int j = 0; j < n_split; ++j) {
+      if (std::abs(std::remainder(x - split[static_cast<std::size_t>(j)], 2.0 * kPi)) < 1e-12) seen = true;
+    }
+    if (!seen) split[static_cast<std::size_t>(n_split++)] = x;
+  }
+  for (int i = 1; i < n_split; ++i) {  // insertion sort of at most 4
+    for (int j = i; j > 0 && split[static_cast<std::size_t>(j - 1)] > split[static_cast<std::size_t>(j)]; --j) {
+      std::swap(split[static_cast<std::size_t>(j - 1)], split[static_cast<std::size_t>(j)]);
+    }
+  }
+  // Pieces: each arc between consecutive split points, halved (every piece then has at most one
+  // near zero, at one of its ends, and is at most pi long); with no split point, two halves.
+  std::array<double, 9> edge{};
+  int n_edge = 0;
+  if (n_split == 0) {
+    edge = {0.0, kPi, 2.0 * kPi};
+    n_edge = 3;
+  } else {
+    for (int j = 0; j < n_split; ++j) {
+      const double a = split[static_cast<std::size_t>(j)];
+      const double b = (j + 1 < n_split) ? split[static_cast<std::size_t>(j + 1)] : split[0] + 2.0 * kPi;
+      edge[static_cast<std::size_t>(n_edge++)] = a;
+      edge[static_cast<std::size_t>(n_edge++)] = 0.5 * (a + b);
+    }
+    edge[static_cast<std::size_t>(n_edge++)] = split[0] + 2.0 * kPi;
+  }
+  Result acc;
+  Panels panels;
+  // Pieces at most pi/2 long: the Weierstrass variable's poles at +-i then stay far from them.
+  for (int i = 0; i + 1 < n_edge; ++i) {
+    const double a = edge[static_cast<std::size_t>(i)];
+    const double b = edge[static_cast<std::size_t>(i + 1)];
+    if (!(b > a)) continue;
+    const int parts = static_cast<int>(std::ceil((b - a) / (0.5 * kPi) - 1e-9));
+    for (int j = 0; j < parts; ++j) {
+    const double t0 = a + (b - a) * j / parts;
+    const double t1 = (j + 1 == parts) ? b : a + (b - a) * (j + 1) / parts;
+    const double m = 0.5 * (t0 + t1);
+    const double T = std::tan(0.25 * (t1 - t0));
+    Singularities sing;
+    sing.z[0] = {0.0, kWeierstrassPoleMargin};
+    sing.count = 1;
+    for (int k = 0; k < zeros.count; ++k) {
+      const double d = zeros.d[static_cast<std::size_t>(k)];
+      if (d < kRimOnEdge) continue;
+      sing.z[static_cast<std::size_t>(sing.count++)] = weierstrass_image(zeros.x[static_cast<std::size_t>(k)], d, m);
+    }
+    build_panels(T, sing, false, panels);
+    const double cm = std::cos(m);
+    const double sm = std::sin(m);
+    for_each_node(panels, [&](double cphi, double sphi, double wgt) {
+      integrand.add(cm * cphi - sm * sphi, sm * cphi + cm * sphi, wgt, acc);
+    });
+    }
+  }
+  return {scale * acc.g1, scale * acc.g2, scale * acc.h};
+}
+
+// Hertz and punch: the ICR reduction (docs/exact-law.md §1; the punch's chord factor in
+// docs/pressure-models.md), the ICR inside in closed form, outside by window or whole - gap.
+template <bool kPunch>
+Result icr_reduction(double mu, double e2, double p, double q, double rho2, double s) {
+  Result r;
+  bool use_window = rho2 > (mu < kSlenderAxisRatio ? kMaxGapRho2Slender : kMaxGapRho2);
+  if (rho2 > 1.0 && !use_window) {
+    const double rho = std::sqrt(rho2);
+    const double e = std::sqrt(e2);
+    const double sigma_gap =
+        difficulty_sigma(gap_half_width(rho), singularities(-q / rho, p / rho, mu, e));
+    const double sigma_window =
+        difficulty_sigma(window_half_width(rho), singularities(-p / rho, -q / rho, mu, e));
+    use_window = sigma_window > sigma_gap;
+  }
+  if (use_window) {
+    r = window_integral<kPunch>(mu, e2, p, q, std::sqrt(rho2), s);
+  } else {
+    const Moments m = moments(mu, e2);
+    r = kPunch ? whole_period_punch(m, mu, e2, p, q) : whole_period(m, mu, e2, p, q);
+    if (rho2 > 1.0) {
+      const Result gap = gap_integral<kPunch>(mu, e2, p, q, std::sqrt(rho2));
+      r.g1 -= gap.g1;
+      r.g2 -= gap.g2;
+      r.h -= gap.h;
+    }
+  }
+  return r;
 }
 
 }  // namespace
 
 std::vector<LawParameter> ExactLaw::parameters() {
-  return {LawParameter::choice("pressure", {"hertz"}, "hertz",
-                               "the normal pressure over the patch: hertz (elastic bodies)")};
+  return {LawParameter::choice("pressure", pressure_names(), "hertz",
+                               "the normal pressure over the patch (docs/pressure-models.md): hertz "
+                               "(elastic bodies), uniform (flat face, Contensou), punch (rigid flat punch)")};
 }
 
 LawPromises ExactLaw::promises() const {
@@ -489,8 +729,9 @@ LawPromises ExactLaw::promises() const {
   p.bounded = true;
   p.whole_domain = true;
   p.exact_pure_spin = true;
+  p.pure_spin_factor = pressure_pure_spin_factor(pressure_);
   p.min_axis_ratio = kExactMinAxisRatio;
-  p.tolerance = kExactLawAccuracy;
+  p.tolerance = pressure_ == Pressure::hertz ? kExactLawAccuracy : kExactLawPressureAccuracy;
   return p;
 }
 
@@ -518,38 +759,29 @@ FrictionForces ExactLaw::do_evaluate(const ContactInput& in) const {
   const double e2 = (1.0 - mu) * (1.0 + mu);
 
   if (s > kFastSlipRatio) {
-    // Fast-slip expansion (docs/model.md); d3, d4 are the pressure's second moments.
+    // Fast-slip expansion (docs/model.md, docs/pressure-models.md): with m2 the pressure's
+    // second moment per axis (1/5 Hertz), F1 = kN (1 - m2 d3/(2 s^2)), F2 = kN m2 d4/(2 s^2),
+    // M = kNa m2 d3/s.
     const double d3 = e2 * cpsi * cpsi + mu * mu;
     const double d4 = 2.0 * e2 * spsi * cpsi;
     const double is = 1.0 / s;
-    return {kN * (1.0 - 0.1 * d3 * is * is), kN * 0.1 * d4 * is * is,
-            sign * kN * in.a * 0.2 * d3 * is};
+    if (pressure_ == Pressure::hertz) {  // kept as it was, bit for bit
+      return {kN * (1.0 - 0.1 * d3 * is * is), kN * 0.1 * d4 * is * is, sign * kN * in.a * 0.2 * d3 * is};
+    }
+    const double m2 = pressure_second_moment(pressure_);
+    return {kN * (1.0 - 0.5 * m2 * d3 * is * is), kN * 0.5 * m2 * d4 * is * is, sign * kN * in.a * m2 * d3 * is};
   }
 
   const double p = s * spsi;
   const double q = s * cpsi / mu;
   const double rho2 = p * p + q * q;
   Result r;
-  bool use_window = rho2 > (mu < kSlenderAxisRatio ? kMaxGapRho2Slender : kMaxGapRho2);
-  if (rho2 > 1.0 && !use_window) {
-    const double rho = std::sqrt(rho2);
-    const double e = std::sqrt(e2);
-    const double sigma_gap =
-        difficulty_sigma(gap_half_width(rho), singularities(-q / rho, p / rho, mu, e));
-    const double sigma_window =
-        difficulty_sigma(window_half_width(rho), singularities(-p / rho, -q / rho, mu, e));
-    use_window = sigma_window > sigma_gap;
-  }
-  if (use_window) {
-    r = window_integral(mu, e2, p, q, std::sqrt(rho2), s);
+  if (pressure_ == Pressure::uniform) {
+    r = uniform_rim(mu, p, mu * q);
+  } else if (pressure_ == Pressure::punch) {
+    r = icr_reduction<true>(mu, e2, p, q, rho2, s);
   } else {
-    r = whole_period(moments(mu, e2), mu, e2, p, q);
-    if (rho2 > 1.0) {
-      const Result gap = gap_integral(mu, e2, p, q, std::sqrt(rho2));
-      r.g1 -= gap.g1;
-      r.g2 -= gap.g2;
-      r.h -= gap.h;
-    }
+    r = icr_reduction<false>(mu, e2, p, q, rho2, s);
   }
   // An ICR on an axis of the ellipse (psi = 0 or pi/2, or any circle): the patch's mirror
   // symmetry about that axis makes the other component of G' vanish; the quadrature would leave

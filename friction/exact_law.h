@@ -40,6 +40,7 @@
 
 #include "friction/law.h"
 #include "friction/law_spec.h"
+#include "friction/pressure.h"
 
 namespace frictionlab::friction {
 
@@ -49,13 +50,25 @@ inline constexpr double kExactLawAccuracy = 1e-13;
 /// The smallest axis ratio b/a ExactLaw accepts (std::invalid_argument below).
 inline constexpr double kExactMinAxisRatio = 1e-12;
 
-/// Exact coupled dry friction over an elliptic Hertz patch, by quadrature (docs/model.md).
+/// The accuracy ExactLaw promises for the uniform and flat-punch pressures (per kN and kNa,
+/// b/a >= kExactMinAxisRatio); docs/pressure-models.md gives the largest error found.
+inline constexpr double kExactLawPressureAccuracy = 1e-10;
+
+/// Exact coupled dry friction over an elliptic patch, by quadrature (docs/model.md), for a
+/// pressure model (friction/pressure.h; docs/pressure-models.md): Hertz (the default, as above),
+/// uniform or the flat punch. Punch: the same reduction, with the chord factor D^0 (the whole
+/// period is again a polynomial in the ICR, the window integrand is smooth to its ends). Uniform:
+/// the divergence theorem turns the patch integrals into integrals over its rim of |rho - c|
+/// (times polynomials), done by Gauss-Legendre panels graded towards the complex zeros of
+/// |rho(t) - c|^2.
 class ExactLaw final : public FrictionLaw {
  public:
-  ExactLaw() = default;
+  explicit ExactLaw(Pressure pressure = Pressure::hertz) : pressure_(pressure) {}
 
-  /// What a spec may set (friction/law_spec.h): pressure = hertz, the distribution over the patch.
+  /// What a spec may set (friction/law_spec.h): pressure = hertz|uniform|punch.
   [[nodiscard]] static std::vector<LawParameter> parameters();
+
+  [[nodiscard]] Pressure pressure() const { return pressure_; }
 
   [[nodiscard]] std::string_view name() const override { return "exact"; }
   [[nodiscard]] LawPromises promises() const override;
@@ -67,6 +80,7 @@ class ExactLaw final : public FrictionLaw {
 
  private:
   [[nodiscard]] FrictionForces do_evaluate(const ContactInput& in) const override;
+  Pressure pressure_;
 };
 
 }  // namespace frictionlab::friction

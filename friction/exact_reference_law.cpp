@@ -57,6 +57,7 @@ struct Problem {
   double r_c = 0.0;  // ICR in polar coordinates of the ellipse frame
   double t_c = 0.0;
   Component component = Component::kF1;
+  Pressure pressure = Pressure::hertz;
   // Inner state: the ray's direction and extent.
   double t = 0.0;
   double ct = 1.0;
@@ -67,8 +68,8 @@ struct Problem {
 };
 
 // Per N, along the ray at angle t of the ellipse frame, r = r_max sin chi:
-// p r dr = (3 / (2 pi mu)) r_max^2 cos^2 chi sin chi dchi, times the component of v/|v| (F1, F2)
-// or of rho x v/|v| (M).
+// p r dr = ((n + 1) / (pi mu)) r_max^2 cos^(2n+1) chi sin chi dchi, times the component of v/|v|
+// (F1, F2) or of rho x v/|v| (M).
 double integrand(double chi, void* params) {
   const auto& pb = *static_cast<const Problem*>(params);
   const double r = pb.r_max * std::sin(chi);
@@ -87,7 +88,13 @@ double integrand(double chi, void* params) {
     case Component::kM: f = (x * vy - y * vx) / nv; break;
   }
   const double c = std::cos(chi);
-  return 3.0 / (2.0 * kPi * pb.mu) * pb.r_max * pb.r_max * c * c * std::sin(chi) * f;
+  double weight = 0.0;  // (n + 1) cos^(2n+1) chi
+  switch (pb.pressure) {
+    case Pressure::hertz: weight = 1.5 * c * c; break;
+    case Pressure::uniform: weight = c; break;
+    case Pressure::punch: weight = 0.5; break;
+  }
+  return weight / (kPi * pb.mu) * pb.r_max * pb.r_max * std::sin(chi) * f;
 }
 
 double outer_integrand(double t, void* params) {
@@ -163,6 +170,11 @@ double integrate(Problem pb) {
 
 }  // namespace
 
+std::vector<LawParameter> ExactReferenceLaw::parameters() {
+  return {LawParameter::choice("pressure", pressure_names(), "hertz",
+                               "the normal pressure over the patch (docs/pressure-models.md): hertz, uniform, punch")};
+}
+
 LawPromises ExactReferenceLaw::promises() const {
   LawPromises p;
   p.F1_in_Omega = Parity::even;
@@ -173,6 +185,7 @@ LawPromises ExactReferenceLaw::promises() const {
   p.dissipative = true;
   p.bounded = true;
   p.exact_pure_spin = true;
+  p.pure_spin_factor = pressure_pure_spin_factor(pressure_);
   p.min_axis_ratio = kExactReferenceMinAxisRatio;
   p.whole_domain = true;  // no GSL failure seen in its domain (1,600 seeded points)
   p.tolerance = kExactReferenceAccuracy;
@@ -203,6 +216,7 @@ FrictionForces ExactReferenceLaw::do_evaluate(const ContactInput& in) const {
   pb.s = s;
   pb.sigma = in.Omega > 0.0 ? 1.0 : -1.0;
   pb.mu = mu;
+  pb.pressure = pressure_;
   pb.cpsi = std::cos(in.psi);
   pb.spsi = std::sin(in.psi);
   // ICR c = (0, sigma s) in the slip frame, c' = sigma s (sin psi, cos psi) in the ellipse frame.

@@ -7,8 +7,11 @@
 //
 // Coordinates: polar about the patch centre in the ellipse frame (x along the major axis),
 // rho = r (cos t, sin t), with r = r_max(t) sin chi, r_max(t) = (cos^2 t / a^2 + sin^2 t / b^2)^-1/2,
-// so that the Hertz factor sqrt(1 - r^2 / r_max^2) = cos chi is smooth:
-//   p dA = (3N / (2 pi a b)) r_max^2 cos^2 chi sin chi dchi dt,   chi in [0, pi/2].
+// so that the pressure factor (1 - r^2 / r_max^2)^n = cos^(2n) chi is harmless:
+//   p dA = ((n + 1) N / (pi a b)) r_max^2 cos^(2n+1) chi sin chi dchi dt,   chi in [0, pi/2],
+// smooth for every pressure model (friction/pressure.h): cos^2 chi sin chi (Hertz, n = 1/2),
+// cos chi sin chi (uniform), sin chi (flat punch, n = -1/2: the substitution absorbs the edge
+// singularity (1 - r^2/r_max^2)^(-1/2) = 1/cos chi into dr = r_max cos chi dchi).
 // The traction direction v/|v| jumps at the instantaneous centre of rotation (ICR), so the inner
 // integral (QAGP/QAGS) breaks at the ray's closest approach to the ICR, and the outer one (QAG,
 // 21-point Gauss-Kronrod, on [t_c, t_c + 2 pi]) breaks at the ICR's direction t_c, at t_c + pi
@@ -31,8 +34,11 @@
 // that GSL never aborts.
 
 #include <string_view>
+#include <vector>
 
 #include "friction/law.h"
+#include "friction/law_spec.h"
+#include "friction/pressure.h"
 
 namespace frictionlab::friction {
 
@@ -41,10 +47,16 @@ inline constexpr double kExactReferenceAccuracy = 1e-10;
 /// The smallest axis ratio b/a ExactReferenceLaw accepts (std::invalid_argument below).
 inline constexpr double kExactReferenceMinAxisRatio = 0.01;
 
-/// The exact law by nested adaptive GSL quadrature over the ellipse (reference, slow).
+/// The exact law by nested adaptive GSL quadrature over the ellipse (reference, slow), for a
+/// pressure model (default Hertz).
 class ExactReferenceLaw final : public FrictionLaw {
  public:
-  ExactReferenceLaw() = default;
+  explicit ExactReferenceLaw(Pressure pressure = Pressure::hertz) : pressure_(pressure) {}
+
+  /// What a spec may set (friction/law_spec.h): pressure = hertz|uniform|punch.
+  [[nodiscard]] static std::vector<LawParameter> parameters();
+
+  [[nodiscard]] Pressure pressure() const { return pressure_; }
 
   [[nodiscard]] std::string_view name() const override { return "exact-reference"; }
   [[nodiscard]] LawPromises promises() const override;
@@ -55,6 +67,7 @@ class ExactReferenceLaw final : public FrictionLaw {
 
  private:
   [[nodiscard]] FrictionForces do_evaluate(const ContactInput& in) const override;
+  Pressure pressure_;
 };
 
 }  // namespace frictionlab::friction

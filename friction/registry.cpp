@@ -59,9 +59,13 @@ class Registry {
  public:
   Registry() {
     // The built-in laws, the reference first.
-    add(built_in([](const LawArguments&) { return std::make_unique<ExactLaw>(); }, ExactLaw::parameters(),
+    add(built_in([](const LawArguments& a) { return std::make_unique<ExactLaw>(parse_pressure(a.choice("pressure"))); },
+                 ExactLaw::parameters(),
                  /*reference=*/true));
-    add(built_in(plain<ExactReferenceLaw>(), {}, false, /*slow=*/true));
+    add(built_in([](const LawArguments& a) {
+          return std::make_unique<ExactReferenceLaw>(parse_pressure(a.choice("pressure")));
+        },
+                 ExactReferenceLaw::parameters(), false, /*slow=*/true));
     add(built_in([](const LawArguments&) { return std::make_unique<PadePrintedLaw>(PadeAlpha::major); }));
     add(built_in([](const LawArguments&) { return std::make_unique<PadePrintedLaw>(PadeAlpha::minor); }));
     add(built_in(plain<PadeReconstructedLaw>()));

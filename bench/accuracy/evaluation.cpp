@@ -17,7 +17,7 @@ std::size_t worker_count(std::size_t threads, std::size_t work_items) {
 
 LawValues evaluate_on_grid(const friction::FrictionLaw& law, const Grid& grid, std::size_t threads) {
   LawValues out;
-  out.law = std::string(law.name());
+  out.law = std::string(law.spec());  // the spec verbatim (friction/law_spec.h)
   out.F1.resize(grid.size());
   out.F2.resize(grid.size());
   out.M.resize(grid.size());

@@ -127,7 +127,7 @@ std::string log_cbtics(int lo, int hi) {
 void write_heat(const StudyResult& study, const LawValues& law, const fs::path& plots,
                 const std::string& terminal, std::vector<fs::path>& scripts) {
   const auto mus = pick_mu(study.grid, {0.05, 0.5, 1.0});
-  const std::string name = "heat_" + law.law;
+  const std::string name = "heat_" + friction::law_file_stem(law.law);
   support::write_file_atomically(plots / (name + ".dat"), heat_data(study, law, mus));
   std::ostringstream gp;
   script_head(gp, terminal, name, 1500, 400 * static_cast<int>(mus.size()) + 60);
@@ -166,7 +166,7 @@ void write_singular(const StudyResult& study, const LawValues& law, const LawSum
   const auto den = known_denominators(law.law);
   const auto map = singularity_map(grid, law, den);
   const auto mus = pick_mu(grid, {0.05, 0.1, 0.25, 0.5, 0.75, 0.95});
-  const std::string name = "singular_" + law.law;
+  const std::string name = "singular_" + friction::law_file_stem(law.law);
   {
     std::ostringstream d;
     d << "# log10(s)  psi_deg  category (0 regular, 1 F2 denominator < 0, 2 M denominator < 0, 3 both,"

@@ -14,6 +14,7 @@
 #include <stdexcept>
 #include <thread>
 
+#include "friction/law_spec.h"
 #include "friction/support/number_format.h"
 
 namespace frictionlab::accuracy {
@@ -435,11 +436,11 @@ void write_study_files(const StudyResult& study, const std::filesystem::path& di
   // The per-point tables are the bulk of the output (~30 MB per law on the default grid): write
   // them in parallel, one law per worker.
   std::vector<std::pair<fs::path, std::function<void(std::ostream&)>>> jobs;
-  jobs.emplace_back(dir / "points" / (study.reference.law + ".csv"), [&](std::ostream& out) {
+  jobs.emplace_back(dir / "points" / (friction::law_file_stem(study.reference.law) + ".csv"), [&](std::ostream& out) {
     write_points_csv(out, study.grid, study.reference, study.reference);
   });
   for (const auto& values : study.values) {
-    jobs.emplace_back(dir / "points" / (values.law + ".csv"), [&study, &values](std::ostream& out) {
+    jobs.emplace_back(dir / "points" / (friction::law_file_stem(values.law) + ".csv"), [&study, &values](std::ostream& out) {
       write_points_csv(out, study.grid, values, study.reference);
     });
   }
@@ -469,7 +470,7 @@ void write_study_files(const StudyResult& study, const std::filesystem::path& di
   for (const auto& law : study.summaries) {
     if (!law.has_denominators) continue;
     fs::create_directories(dir / "singular");
-    write_file(dir / "singular" / (law.law + ".csv"),
+    write_file(dir / "singular" / (friction::law_file_stem(law.law) + ".csv"),
                [&](std::ostream& out) { write_poles_csv(out, study.grid, law); });
   }
   write_file(dir / "accuracy_tables.md", [&](std::ostream& out) { write_tables_markdown(out, study, run); });

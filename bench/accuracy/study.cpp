@@ -27,10 +27,11 @@ std::vector<std::string> default_laws() {
 
 void check_laws(const std::vector<std::string>& laws, const Grid& grid) {
   for (std::size_t i = 0; i < laws.size(); ++i) {
-    const friction::LawInfo info = friction::law_info(laws[i]);  // throws, listing the known names
-    if (std::find(laws.begin(), laws.begin() + static_cast<std::ptrdiff_t>(i), laws[i]) !=
-        laws.begin() + static_cast<std::ptrdiff_t>(i)) {
-      throw std::invalid_argument("law '" + laws[i] + "' is listed twice: list each law once");
+    const friction::LawInfo info = friction::law_info(laws[i]);  // throws, naming what is wrong
+    for (std::size_t j = 0; j < i; ++j) {  // two spellings of one spec are the same law
+      if (friction::canonical_law_spec(laws[j]) == friction::canonical_law_spec(laws[i])) {
+        throw std::invalid_argument("law '" + laws[i] + "' is listed twice: list each law once");
+      }
     }
     if (info.slow && grid.size() > kSlowLawMaxPoints) {
       throw std::invalid_argument(
@@ -95,7 +96,8 @@ StudyResult run_study(const StudyOptions& options) {
   const std::vector<std::string> laws = options.laws.empty() ? default_laws() : options.laws;
   check_laws(laws, grid);
   std::ostream* log = options.progress;
-  const std::string reference_name = friction::reference_law_name();
+  const std::string reference_name = options.reference.empty() ? friction::reference_law_name() : options.reference;
+  const auto reference = friction::make_law(reference_name);  // a bad spec throws before anything runs
 
   if (log) {
     *log << "accuracy: grid " << grid.s().size() << " s x " << grid.mu().size() << " mu x "
@@ -103,7 +105,6 @@ StudyResult run_study(const StudyOptions& options) {
          << laws.size() << " laws against '" << reference_name << "'" << std::endl;
   }
   auto t0 = std::chrono::steady_clock::now();
-  const auto reference = friction::make_reference_law();
   result.reference = evaluate_on_grid(*reference, grid, options.threads);
   result.reference_seconds = seconds_since(t0);
   if (log) {

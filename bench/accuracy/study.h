@@ -28,7 +28,9 @@ inline constexpr std::size_t kSlowLawMaxPoints = 5000;
 
 struct StudyOptions {
   GridSpec grid;                   ///< the grid (defaults: 200 s x 20 mu x 25 psi x 2 signs)
-  std::vector<std::string> laws;   ///< laws to compare with the reference; empty: default_laws()
+  std::vector<std::string> laws;   ///< law specs to compare with the reference; empty: default_laws()
+  std::string reference;           ///< the reference's spec (e.g. exact:pressure=uniform); empty: the
+                                   ///< registry's reference law (friction::reference_law_name())
   std::size_t threads = 0;         ///< worker threads, 0: one per hardware thread
   std::ostream* progress = nullptr;  ///< one line per evaluated law, if given
 };

@@ -15,6 +15,7 @@
 #include "bench/accuracy/report.h"
 #include "bench/accuracy/study.h"
 #include "dynamics/cli/commands.h"
+#include "friction/law_spec.h"
 #include "friction/support/errors.h"
 #include "friction/support/number_format.h"
 
@@ -28,7 +29,8 @@ constexpr long long kMaxGridPoints = 10'000'000;
 // Counts as typed (signed, so that -3 is an error rather than a huge unsigned number).
 struct AccuracyOptions {
   std::string out;
-  std::vector<std::string> laws;
+  std::string laws;       // a list of specs (friction/law_spec.h)
+  std::string reference;  // a spec; empty: the registry's reference law
   long long s_points = static_cast<long long>(accuracy::GridSpec{}.s_points);
   long long mu_points = static_cast<long long>(accuracy::GridSpec{}.mu_points);
   long long psi_points = static_cast<long long>(accuracy::GridSpec{}.psi_points);
@@ -61,7 +63,8 @@ void run(const AccuracyOptions& opt) {
   if (opt.out.empty()) throw std::invalid_argument("--out is empty: name the output folder");
   accuracy::StudyOptions so;
   so.grid = grid_of(opt);
-  so.laws = opt.laws;
+  if (!opt.laws.empty()) so.laws = friction::split_law_list(opt.laws);
+  so.reference = opt.reference;
   so.threads = count("--threads", opt.threads);
   const auto t0 = std::chrono::steady_clock::now();
   so.progress = &std::cerr;
@@ -91,9 +94,11 @@ void register_accuracy_command(CLI::App& app) {
       "gnuplot figures under --out (see DIR/README.md)");
   cmd->add_option("--out", opt->out, "output folder (created; existing files are replaced)")->required();
   cmd->add_option("--laws", opt->laws,
-                  "comma-separated laws to compare with exact (default: every registered law but exact "
-                  "and exact-reference; exact-reference only on a small grid)")
-      ->delimiter(',');
+                  "law specs to compare with the reference, separated by ';' or ',' (default: every registered "
+                  "law but exact and exact-reference; exact-reference only on a small grid)");
+  cmd->add_option("--reference", opt->reference,
+                  "the reference's spec, e.g. exact:pressure=uniform to study laws for a uniform pressure "
+                  "(default: exact)");
   cmd->add_option("--s-points", opt->s_points, "slip ratios, log-spaced over [1e-3, 1e3] (>= 2)")
       ->capture_default_str();
   cmd->add_option("--mu-points", opt->mu_points, "axis ratios b/a, evenly over [0.05, 1] (>= 2)")
@@ -109,10 +114,8 @@ void register_accuracy_command(CLI::App& app) {
     const AccuracyOptions defaults;
     std::ostringstream line;
     line << "frictionlab accuracy --out " << opt->out;
-    if (!opt->laws.empty()) {
-      line << " --laws ";
-      for (std::size_t i = 0; i < opt->laws.size(); ++i) line << (i ? "," : "") << opt->laws[i];
-    }
+    if (!opt->laws.empty()) line << " --laws '" << opt->laws << "'";
+    if (!opt->reference.empty()) line << " --reference " << opt->reference;
     if (opt->s_points != defaults.s_points) line << " --s-points " << opt->s_points;
     if (opt->mu_points != defaults.mu_points) line << " --mu-points " << opt->mu_points;
     if (opt->psi_points != defaults.psi_points) line << " --psi-points " << opt->psi_points;

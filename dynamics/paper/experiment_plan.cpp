@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <system_error>
 
+#include "friction/law_spec.h"
 #include "friction/registry.h"
 #include "friction/support/number_format.h"
 
@@ -142,8 +143,8 @@ std::vector<RunSpec> plan_runs(const PlanOptions& options) {
       std::shared_ptr<const Scenario> reference;
       for (const auto& law : options.laws) {
         RunSpec r = base;
-        r.law = r.label = law;
-        r.out_dir = group_dir / r.label;
+        r.law = r.label = law;  // the spec verbatim; its folder a name safe in paths and links
+        r.out_dir = group_dir / friction::law_file_stem(r.label);
         r.scenario = resolve(doc, r);  // throws on a bad --set
         if (friction::canonical_law_spec(law) == kReferenceLaw) reference = r.scenario;
         runs.push_back(std::move(r));

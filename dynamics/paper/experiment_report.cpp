@@ -107,7 +107,7 @@ std::string behaviour_csv_row(const RunResult& r) {
   const Plateau& p = f.plateau;
   const RunSummary& s = r.summary;
   std::ostringstream row;
-  row << r.spec.egg << ',' << r.spec.case_id << ',' << r.spec.law << ',' << r.spec.label << ','
+  row << r.spec.egg << ',' << r.spec.case_id << ',' << csv_text(r.spec.law) << ',' << csv_text(r.spec.label) << ','
       << (r.spec.baseline ? 1 : 0) << ',' << reason(r) << ',' << csv_text(r.executed ? s.message : "") << ','
       << csv_num(r.executed ? s.t_final : kNaN) << ',' << (r.executed ? s.steps : 0) << ','
       << (r.executed ? s.rejected_steps : 0) << ',' << (r.executed ? s.rhs_calls : 0) << ','
@@ -143,7 +143,7 @@ std::string comparison_csv(const std::vector<LawComparison>& comparisons) {
          "wall_time_s,rhs_calls\n";
   for (const auto& c : comparisons) {
     const RunResult& r = *c.run;
-    csv << r.spec.egg << ',' << r.spec.case_id << ',' << r.spec.law << ',' << r.spec.label << ','
+    csv << r.spec.egg << ',' << r.spec.case_id << ',' << csv_text(r.spec.law) << ',' << csv_text(r.spec.label) << ','
         << csv_num(kDivergenceThreshold) << ',' << csv_num(c.raw.found ? c.raw.t : kNaN) << ','
         << csv_num(c.smooth.found ? c.smooth.t : kNaN) << ',' << csv_num(c.raw.horizon) << ','
         << csv_num(c.stagnation_difference) << ',' << csv_num(c.final_gamma3_difference) << ','

@@ -14,6 +14,7 @@
 #include "dynamics/paper/run_series.h"
 #include "dynamics/body.h"
 #include "dynamics/scenario_run.h"
+#include "friction/law_spec.h"
 #include "friction/support/checked_output.h"
 #include "friction/support/number_format.h"
 
@@ -105,7 +106,8 @@ std::string thinning_text(long every) {
 
 }  // namespace
 
-std::string plot_data_stem(const RunSpec& spec) { return spec.group() + "-" + spec.label; }
+// The label is a law spec (e.g. exact:pressure=uniform): made safe for file names and gnuplot.
+std::string plot_data_stem(const RunSpec& spec) { return spec.group() + "-" + friction::law_file_stem(spec.label); }
 
 void RunnerOptions::validate() const {
   thresholds.validate();

@@ -6,6 +6,8 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <string>
 
 #include "tests/cli/cli_runner.h"
@@ -35,6 +37,28 @@ TEST(AccuracyCommand, TinyStudyWritesTheFiles) {
     EXPECT_TRUE(std::filesystem::exists(out / f)) << f;
   }
   std::filesystem::remove_all(out);
+}
+
+void expect_one_line_error(const std::string& args, const std::string& fragment);
+
+TEST(AccuracyCommand, SpecsForTheLawsAndTheReferenceAreEchoedVerbatim) {
+  // The laws for a uniform pressure, against the exact law for that pressure.
+  const auto out = temp_out("spec");
+  const auto r = run_frictionlab("accuracy --out " + out.string() +
+                                 " --reference exact:pressure=uniform --laws 'exact:pressure=punch;pade-printed'"
+                                 " --s-points 5 --mu-points 2 --psi-points 3 --no-plots");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("against 'exact:pressure=uniform'"), std::string::npos) << r.err;
+  for (const char* f : {"points/exact_pressure-uniform.csv", "points/exact_pressure-punch.csv",
+                        "points/pade-printed.csv", "plots/heat_exact_pressure-punch.gp"}) {
+    EXPECT_TRUE(std::filesystem::exists(out / f)) << f;
+  }
+  std::ifstream summary(out / "summary.csv");
+  const std::string text((std::istreambuf_iterator<char>(summary)), std::istreambuf_iterator<char>());
+  EXPECT_NE(text.find("\nexact:pressure=punch,"), std::string::npos) << text;
+  std::filesystem::remove_all(out);
+  expect_one_line_error("accuracy --out " + out.string() + " --reference exact:pressure=flat",
+                        "pressure must be one of hertz, uniform, punch");
 }
 
 void expect_one_line_error(const std::string& args, const std::string& fragment) {

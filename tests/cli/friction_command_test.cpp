@@ -4,12 +4,15 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <numbers>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "friction/batch.h"
@@ -176,6 +179,22 @@ TEST(FrictionCommand, LawSpecsWorkAndAreEchoedVerbatim) {
   EXPECT_EQ(count_lines(bad.err), 1u) << bad.err;
   EXPECT_NE(bad.err.find("pressure = 'flat' is not allowed: pressure must be one of hertz"), std::string::npos)
       << bad.err;
+}
+
+TEST(FrictionCommand, PressureSpecsGiveTheirPureSpinTorque) {
+  // A circle at pure spin: M = c k N a with c = 3 pi/16 (Hertz), 2/3 (uniform), pi/4 (punch)
+  // (docs/pressure-models.md); k N a = 0.5 * 10 * 0.01.
+  const std::string contact = " --U 0 --Omega 1 --a 0.01 --b 0.01 --psi 0 --N 10 --k 0.5";
+  const double kNa = 0.05;
+  const std::pair<const char*, double> cases[] = {{"exact:pressure=hertz", 3.0 * std::numbers::pi / 16.0},
+                                                  {"exact:pressure=uniform", 2.0 / 3.0},
+                                                  {"exact:pressure=punch", std::numbers::pi / 4.0}};
+  for (const auto& [spec, c] : cases) {
+    const auto r = run_frictionlab(std::string("friction --law ") + spec + contact);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const double M = std::stod(r.out.substr(r.out.rfind(',') + 1));
+    EXPECT_NEAR(M, c * kNa, 1e-10 * kNa) << spec << ": " << r.out;
+  }
 }
 
 TEST(FrictionCommand, OnErrorSkipAndNanKeepGoingAndWarnOnStderr) {

@@ -251,6 +251,7 @@ TEST(DynScenario, TheLawMayBeASpecKeptVerbatim) {
   EXPECT_EQ(s.law, "exact:pressure=hertz");
   EXPECT_NE(s.resolved_toml.find("law = 'exact:pressure=hertz'"), std::string::npos) << s.resolved_toml;
   EXPECT_EQ(parse_scenario(kGood, "test.toml", {"contact.law=exact:pressure=hertz"}).law, "exact:pressure=hertz");
+  EXPECT_EQ(parse_scenario(kGood, "test.toml", {"contact.law=exact:pressure=uniform"}).law, "exact:pressure=uniform");
   const std::string e = error_of(kGood, {"contact.law=exact:pressure=flat"});
   EXPECT_EQ(e.rfind("--set contact.law=exact:pressure=flat: contact.law = 'exact:pressure=flat' is invalid", 0), 0u) << e;
   EXPECT_NE(e.find("pressure must be one of hertz"), std::string::npos) << e;

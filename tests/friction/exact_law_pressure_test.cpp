@@ -1,0 +1,210 @@
+// The exact law for each pressure model (friction/pressure.h) against the closed forms derived in
+// docs/pressure-models.md §2 (pure spin, the uniform circle for every slip ratio, the fast-slip
+// rule), symmetries, and against exact-reference (an independent 2-D quadrature) on a seeded set.
+
+#include <boost/math/special_functions/ellint_1.hpp>
+#include <boost/math/special_functions/ellint_2.hpp>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <memory>
+#include <numbers>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "friction/exact_law.h"
+#include "friction/exact_reference_law.h"
+#include "friction/pressure.h"
+#include "friction/registry.h"
+
+namespace frictionlab::friction {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+// The accuracy `exact` promises for the uniform and punch pressures (per kN and kNa).
+constexpr double kTol = kExactLawPressureAccuracy;
+const Pressure kAll[] = {Pressure::hertz, Pressure::uniform, Pressure::punch};
+
+std::string spec_of(Pressure p) { return "exact:pressure=" + std::string(pressure_name(p)); }
+
+// a = 1, N = 1, k = 1: forces per kN, moment per kNa.
+ContactInput unit(double s, double mu, double psi, double omega = 1.0) {
+  return {s * std::abs(omega), omega, 1.0, mu, psi, 1.0, 1.0};
+}
+
+// The uniform circle, docs/pressure-models.md §2 (Contensou-Erismann), in long double:
+// F1/kN and M/kNa at slip ratio u. The u >= 1 moment cancels like u^4: good to ~1e-14 for u <= 20.
+struct Circle {
+  double f1, m;
+};
+Circle uniform_circle(double u_in) {
+  const long double u = u_in;
+  const long double u2 = u * u;
+  const long double pi = std::numbers::pi_v<long double>;
+  if (u == 1.0L) return {static_cast<double>(8.0L / (3.0L * pi)), static_cast<double>(8.0L / (9.0L * pi))};  // (1 - u^2) K -> 0
+  if (u < 1.0L) {
+    const long double K = boost::math::ellint_1(u);
+    const long double E = boost::math::ellint_2(u);
+    return {static_cast<double>(4.0L / (3.0L * pi * u) * ((1.0L + u2) * E - (1.0L - u2) * K)),
+            static_cast<double>(4.0L / (9.0L * pi) * ((4.0L - 2.0L * u2) * E - (1.0L - u2) * K))};
+  }
+  const long double K = boost::math::ellint_1(1.0L / u);
+  const long double E = boost::math::ellint_2(1.0L / u);
+  return {static_cast<double>(4.0L / (3.0L * pi) * ((1.0L + u2) * E - (u2 - 1.0L) * K)),
+          static_cast<double>(4.0L * u / (9.0L * pi) * ((4.0L - 2.0L * u2) * E + (2.0L * u2 - 5.0L + 3.0L / u2) * K))};
+}
+
+TEST(ExactPressure, SpecsMakeTheLawWithItsPressure) {
+  for (const Pressure p : kAll) {
+    const auto law = make_law(spec_of(p));
+    EXPECT_EQ(law->name(), "exact");
+    EXPECT_EQ(law->spec(), spec_of(p));
+    const auto* exact = dynamic_cast<const ExactLaw*>(law.get());
+    ASSERT_NE(exact, nullptr);
+    EXPECT_EQ(exact->pressure(), p);
+  }
+  EXPECT_EQ(dynamic_cast<const ExactLaw&>(*make_law("exact")).pressure(), Pressure::hertz);
+}
+
+TEST(ExactPressure, PureSpinOfACircle) {
+  // Hertz (3 pi/16) kNa, uniform (2/3) kNa, punch (pi/4) kNa; F1 = F2 = 0.
+  const double expected[] = {3.0 * kPi / 16.0, 2.0 / 3.0, kPi / 4.0};
+  for (int i = 0; i < 3; ++i) {
+    const ExactLaw law(kAll[i]);
+    for (const double omega : {2.0, -2.0}) {
+      const FrictionForces f = law.evaluate({0.0, omega, 0.01, 0.01, 0.4, 20.0, 0.3});
+      const double kNa = 0.3 * 20.0 * 0.01;
+      EXPECT_NEAR(f.F1, 0.0, kTol * 6.0) << pressure_name(kAll[i]);
+      EXPECT_NEAR(f.F2, 0.0, kTol * 6.0) << pressure_name(kAll[i]);
+      EXPECT_NEAR(f.M, std::copysign(expected[i], omega) * kNa, kTol * kNa) << pressure_name(kAll[i]);
+    }
+  }
+}
+
+TEST(ExactPressure, PureSpinOfAnEllipseIsTheFactorTimesE) {
+  // M = c k N a E(e), c = 3/8, 4/(3 pi), 1/2.
+  const double factor[] = {3.0 / 8.0, 4.0 / (3.0 * kPi), 0.5};
+  for (int i = 0; i < 3; ++i) {
+    EXPECT_DOUBLE_EQ(pressure_pure_spin_factor(kAll[i]), factor[i]);
+    const ExactLaw law(kAll[i]);
+    for (const double mu : {0.01, 0.05, 0.3, 0.7, 0.999}) {
+      const double E = boost::math::ellint_2(std::sqrt((1.0 - mu) * (1.0 + mu)));
+      EXPECT_NEAR(law.evaluate(unit(0.0, mu, 0.9)).M, factor[i] * E, kTol)
+          << pressure_name(kAll[i]) << " mu = " << mu;
+    }
+  }
+}
+
+TEST(ExactPressure, UniformCircleForEverySlipRatio) {
+  const ExactLaw law(Pressure::uniform);
+  for (const double u : {1e-4, 1e-2, 0.1, 0.5, 0.9, 0.999, 1.0, 1.001, 1.1, 2.0, 5.0, 20.0}) {
+    const Circle c = uniform_circle(u);
+    for (const double psi : {0.0, 1.1}) {  // a circle: psi does not matter
+      const FrictionForces f = law.evaluate(unit(u, 1.0, psi));
+      EXPECT_NEAR(f.F1, c.f1, kTol) << "u = " << u;
+      EXPECT_NEAR(f.F2, 0.0, kTol) << "u = " << u;
+      EXPECT_NEAR(f.M, c.m, kTol) << "u = " << u;
+    }
+  }
+}
+
+TEST(ExactPressure, FastSlipCoefficientsAreTheSecondMoments) {
+  // F1 = kN (1 - m2 d3/(2 s^2)), F2 = kN m2 d4/(2 s^2), M = kNa m2 d3/s + O(s^-3), m2 = 1/5, 1/4,
+  // 1/3: measured at s = 1e3, where the law integrates (its expansion starts at 1e8) and the
+  // next terms are ~1e-6 relative.
+  const double m2[] = {0.2, 0.25, 1.0 / 3.0};
+  const double s = 1e3;
+  for (int i = 0; i < 3; ++i) {
+    EXPECT_DOUBLE_EQ(pressure_second_moment(kAll[i]), m2[i]);
+    const ExactLaw law(kAll[i]);
+    for (const double mu : {0.05, 0.4, 1.0}) {
+      for (const double psi : {0.0, 0.7, 2.0}) {
+        const double d3 = std::cos(psi) * std::cos(psi) + mu * mu * std::sin(psi) * std::sin(psi);
+        const double d4 = (1.0 - mu * mu) * std::sin(2.0 * psi);
+        const FrictionForces f = law.evaluate(unit(s, mu, psi));
+        SCOPED_TRACE(std::string(pressure_name(kAll[i])) + " mu = " + std::to_string(mu) + " psi = " + std::to_string(psi));
+        EXPECT_NEAR((1.0 - f.F1) * s * s, 0.5 * m2[i] * d3, 2e-4);
+        EXPECT_NEAR(f.F2 * s * s, 0.5 * m2[i] * d4, 2e-4);
+        EXPECT_NEAR(f.M * s, m2[i] * d3, 1e-5);
+      }
+    }
+  }
+}
+
+TEST(ExactPressure, SymmetriesHoldForEveryPressure) {
+  std::mt19937_64 rng(91);
+  std::uniform_real_distribution<double> uni(0.0, 1.0);
+  for (const Pressure p : kAll) {
+    const ExactLaw law(p);
+    for (int i = 0; i < 60; ++i) {
+      const double s = std::pow(10.0, -3.0 + 6.0 * uni(rng));
+      const double mu = std::pow(10.0, -2.0 * uni(rng));
+      const double psi = kPi * (2.0 * uni(rng) - 1.0);
+      const FrictionForces f = law.evaluate(unit(s, mu, psi));
+      const FrictionForces spin = law.evaluate(unit(s, mu, psi, -1.0));
+      const FrictionForces turned = law.evaluate(unit(s, mu, psi + kPi));
+      const FrictionForces mirror = law.evaluate(unit(s, mu, -psi));
+      SCOPED_TRACE(std::string(pressure_name(p)) + " s = " + std::to_string(s) + " mu = " + std::to_string(mu));
+      EXPECT_NEAR(spin.F1, f.F1, kTol);  // even in Omega
+      EXPECT_NEAR(spin.F2, f.F2, kTol);
+      EXPECT_NEAR(spin.M, -f.M, kTol);  // odd
+      EXPECT_NEAR(turned.F1, f.F1, kTol);  // the patch is symmetric under a half turn
+      EXPECT_NEAR(turned.F2, f.F2, kTol);
+      EXPECT_NEAR(turned.M, f.M, kTol);
+      EXPECT_NEAR(mirror.F1, f.F1, kTol);  // mirror: F2 flips
+      EXPECT_NEAR(mirror.F2, -f.F2, kTol);
+      EXPECT_NEAR(mirror.M, f.M, kTol);
+      EXPECT_LE(f.F1 * f.F1 + f.F2 * f.F2, 1.0 + kTol);
+      EXPECT_GT(f.F1, 0.0);
+      EXPECT_GT(f.M, 0.0);
+    }
+  }
+}
+
+TEST(ExactPressure, AgreesWithTheReferenceOnASeededSet) {
+  // exact-reference integrates the definition in 2-D (GSL, accurate to 1e-10): a few points per
+  // pressure (about 0.1 s each), mu log-uniform in [0.01, 1], s log-uniform in [1e-2, 1e2] with
+  // one ICR near the rim, psi anywhere.
+  std::mt19937_64 rng(2026);
+  std::uniform_real_distribution<double> uni(0.0, 1.0);
+  for (const Pressure p : kAll) {
+    const ExactLaw law(p);
+    const ExactReferenceLaw reference(p);
+    for (int i = 0; i < 5; ++i) {
+      const double mu = std::pow(10.0, -2.0 * uni(rng));
+      const double psi = kPi * (2.0 * uni(rng) - 1.0);
+      double s = std::pow(10.0, -2.0 + 4.0 * uni(rng));
+      if (i == 0) {  // the ICR just outside the rim: c~ = s (sin psi, cos psi / mu), |c~| = 1.01
+        s = 1.01 / std::hypot(std::sin(psi), std::cos(psi) / mu);
+      }
+      const ContactInput in = unit(s, mu, psi, i % 2 == 0 ? 1.0 : -1.0);
+      const FrictionForces f = law.evaluate(in);
+      const FrictionForces r = reference.evaluate(in);
+      SCOPED_TRACE(std::string(pressure_name(p)) + " s = " + std::to_string(s) + " mu = " + std::to_string(mu) +
+                   " psi = " + std::to_string(psi));
+      // Both promise 1e-10: they must agree to twice that.
+      EXPECT_NEAR(f.F1, r.F1, 2.0 * kTol);
+      EXPECT_NEAR(f.F2, r.F2, 2.0 * kTol);
+      EXPECT_NEAR(f.M, r.M, 2.0 * kTol);
+    }
+  }
+}
+
+TEST(ExactPressure, FiniteBelowTheAccurateRange) {
+  for (const Pressure p : kAll) {
+    const ExactLaw law(p);
+    for (const double mu : {1e-3, 1e-6, 1e-12}) {
+      for (const double s : {0.0, 1e-6, 0.5, 1.0, 3.0, 1e5, 1e12}) {
+        for (const double psi : {0.0, 0.3, kPi / 2}) {
+          const FrictionForces f = law.evaluate(unit(s, mu, psi));
+          EXPECT_TRUE(std::isfinite(f.F1) && std::isfinite(f.F2) && std::isfinite(f.M))
+              << pressure_name(p) << " mu = " << mu << " s = " << s << " psi = " << psi;
+        }
+      }
+    }
+  }
+}
+
+}  // namespace
+}  // namespace frictionlab::friction
