@@ -516,8 +516,9 @@ constexpr double kRimTrapezoidMaxDistance = 3.0;
 constexpr double kRimOnEdge = 1e-14;
 
 struct RimZeros {
-  std::array<double, 4> x{};  // real parts
-  std::array<double, 4> d{};  // |imaginary parts|
+  std::array<std::complex<double>, 4> z{};  // e^(it)
+  std::array<double, 4> x{};                // real parts (set by the graded branch)
+  std::array<double, 4> d{};                // |imaginary parts|
   int count = 0;
 };
 
@@ -528,11 +529,11 @@ RimZeros rim_zeros(double mu, double c1, double c2) {
   using Complex = std::complex<double>;
   RimZeros out;
   const auto add = [&](Complex z) {
-    const double r = std::abs(z);
-    if (!(r > 0.0) || !std::isfinite(r)) return;
-    const double d = std::abs(std::log(r));
+    const double r2 = std::norm(z);
+    if (!(r2 > 0.0) || !std::isfinite(r2)) return;
+    const double d = 0.5 * std::abs(std::log(r2));
     if (d > 30.0) return;  // too far to matter
-    out.x[static_cast<std::size_t>(out.count)] = std::arg(z);
+    out.z[static_cast<std::size_t>(out.count)] = z;  // its real part t = arg z only when needed
     out.d[static_cast<std::size_t>(out.count)] = d;
     ++out.count;
   };
@@ -590,7 +591,7 @@ struct RimIntegrand {
 };
 
 Result uniform_rim(double mu, double c1, double c2) {
-  const RimZeros zeros = rim_zeros(mu, c1, c2);
+  RimZeros zeros = rim_zeros(mu, c1, c2);
   const double cn = std::sqrt(c1 * c1 + c2 * c2);
   const bool use_hat = cn > 1.0;
   const RimIntegrand integrand{mu, c1, c2, cn, use_hat ? c1 / cn : 0.0, use_hat ? c2 / cn : 0.0, use_hat};
@@ -614,6 +615,10 @@ Result uniform_rim(double mu, double c1, double c2) {
       ct = c_next;
     }
     return {scale * r.g1, scale * r.g2, scale * r.h};
+  }
+  for (int k = 0; k < zeros.count; ++k) {
+    const std::complex<double> z = zeros.z[static_cast<std::size_t>(k)];
+    zeros.x[static_cast<std::size_t>(k)] = std::atan2(z.imag(), z.real());
   }
   // Split points: the real parts of near zeros, sorted, deduplicated (modulo 2 pi).
   std::array<double, 4> split{};

@@ -2,14 +2,18 @@
 // It checks the installed libraries against closed forms (docs/model.md) and exits 1 on a mismatch:
 //   * the exact law at pure spin on a circular patch: F1 = F2 = 0, M = (3 pi/16) k N a sign(Omega);
 //   * the exact law at pure sliding: F1 = k N, F2 = M = 0;
+//   * a law spec: exact:pressure=uniform at pure spin on a circle, M = (2/3) k N a sign(Omega);
+//   * a law of the user's own, registered from this program (docs/extending.md) and made by name;
 //   * the shipped scenario sphere-sliding.toml: a solid sphere launched sliding without spin starts
 //     to roll at t = 2 v0 / (7 k g) with speed 5 v0 / 7 (and omega R = v).
 #include <cmath>
 #include <cstdio>
 #include <exception>
 #include <filesystem>
+#include <memory>
 #include <numbers>
 #include <string>
+#include <string_view>
 
 #include "dynamics/equations_of_motion.h"
 #include "dynamics/scenario.h"
@@ -58,6 +62,33 @@ void check_exact_law() {
   check_near("M at pure sliding", f.M, 0.0, kExactRelTol * kN * in.a);
 }
 
+// A user's law: no friction at all.
+class NoFrictionLaw final : public fl::friction::FrictionLaw {
+ public:
+  [[nodiscard]] std::string_view name() const override { return "consumer-no-friction"; }
+  [[nodiscard]] std::string_view summary() const override { return "no friction (consumer example)"; }
+
+ private:
+  [[nodiscard]] fl::friction::FrictionForces do_evaluate(const fl::friction::ContactInput&) const override {
+    return {};
+  }
+};
+
+void check_specs_and_user_law() {
+  fl::friction::ContactInput in;
+  in.a = in.b = 2e-3;  // m: a circle
+  in.U = 0.0;
+  in.Omega = -10.0;
+  in.N = 19.62;
+  in.k = 0.1;
+  const double kNa = in.k * in.N * in.a;
+  const auto uniform = fl::friction::make_law("exact:pressure=uniform");
+  check_near("M of exact:pressure=uniform at pure spin", uniform->evaluate(in).M, -2.0 / 3.0 * kNa, 1e-10 * kNa);
+  fl::friction::register_law("consumer-no-friction", "no friction (consumer example)",
+                             [] { return std::make_unique<NoFrictionLaw>(); });
+  check_near("M of the registered user law", fl::friction::make_law("consumer-no-friction")->evaluate(in).M, 0.0, 0.0);
+}
+
 // The run stops once the slip speed is below the scenario's run.rest_slip_speed U_r = 1e-6 m/s;
 // the slip falls at 3.5 k g, so the stop comes up to U_r / (3.5 k g) = 1.5e-7 s early, with v
 // still up to k g times that (3e-7 m/s) above 5 v0 / 7. The integrator's error (tolerances 1e-9)
@@ -92,6 +123,7 @@ void check_sliding_sphere() {
 int main() {
   try {
     check_exact_law();
+    check_specs_and_user_law();
     check_sliding_sphere();
   } catch (const std::exception& e) {
     std::printf("FAIL %s\n", e.what());
