@@ -10,11 +10,22 @@ void put(std::string& line, double x) {
   line.push_back(',');
 }
 
-void put3(std::string& line, const Eigen::Vector3d& v) {
-  for (int i = 0; i < 3; ++i) put(line, v[i]);
-}
-
 }  // namespace
+
+std::array<double, kTrajectoryColumns.size()> trajectory_row(const Sample& s) {
+  const ContactState& c = s.contact;
+  const Eigen::Vector3d omega = angular_velocity(s.x);
+  const Eigen::Vector3d v = velocity(s.x);
+  return {s.t,
+          c.gamma[0], c.gamma[1], c.gamma[2],
+          omega[0], omega[1], omega[2],
+          v[0], v[1], v[2],
+          height(s.x), c.N, c.U, c.Omega,
+          c.friction.F1, c.friction.F2, c.friction.M,
+          c.a, c.b, c.psi,
+          s.energy, s.kinetic, slide_work(s.x), spin_work(s.x),
+          c.in_contact ? 1.0 : 0.0};
+}
 
 TrajectoryCsv::TrajectoryCsv(const std::filesystem::path& file) : file_(file) {
   std::string header;
@@ -27,27 +38,10 @@ TrajectoryCsv::TrajectoryCsv(const std::filesystem::path& file) : file_(file) {
 }
 
 void TrajectoryCsv::sample(const Sample& s) {
-  const ContactState& c = s.contact;
+  const auto row = trajectory_row(s);
   line_.clear();
-  put(line_, s.t);
-  put3(line_, c.gamma);
-  put3(line_, angular_velocity(s.x));
-  put3(line_, velocity(s.x));
-  put(line_, height(s.x));
-  put(line_, c.N);
-  put(line_, c.U);
-  put(line_, c.Omega);
-  put(line_, c.friction.F1);
-  put(line_, c.friction.F2);
-  put(line_, c.friction.M);
-  put(line_, c.a);
-  put(line_, c.b);
-  put(line_, c.psi);
-  put(line_, s.energy);
-  put(line_, s.kinetic);
-  put(line_, slide_work(s.x));
-  put(line_, spin_work(s.x));
-  line_ += c.in_contact ? "1\n" : "0\n";
+  for (std::size_t i = 0; i + 1 < row.size(); ++i) put(line_, row[i]);
+  line_ += row.back() != 0.0 ? "1\n" : "0\n";
   try {
     file_.append(line_);
   } catch (const support::OutputError& e) {

@@ -41,6 +41,10 @@ inline constexpr std::array<std::string_view, 25> kTrajectoryColumns = {
     "v3", "eps",    "N",      "U",      "Omega",  "F1",     "F2",      "M",      "a",
     "b",  "psi",    "energy", "kinetic", "W_slide", "W_spin", "in_contact"};
 
+/// One row: the values of kTrajectoryColumns at sample `s` (in_contact as 0 or 1). The CSV writes
+/// these numbers; other sinks (the Python module's arrays) take them from here too.
+[[nodiscard]] std::array<double, kTrajectoryColumns.size()> trajectory_row(const Sample& s);
+
 class TrajectoryCsv final : public Observer {
  public:
   /// Creates (or truncates) `file` and writes the header. Throws support::OutputError if the file

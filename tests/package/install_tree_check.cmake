@@ -1,13 +1,15 @@
 # The install tree as a user meets it (tests/package/CMakeLists.txt registers the steps with ctest).
-#   cmake -DSTEP=install|consumer|build-tree|command|options-off|subproject -DFRICTIONLAB_SOURCE_DIR=... -DFRICTIONLAB_BUILD_DIR=... \
+#   cmake -DSTEP=install|consumer|build-tree|command|python|options-off|subproject -DFRICTIONLAB_SOURCE_DIR=... -DFRICTIONLAB_BUILD_DIR=... \
 #         -DWORK_DIR=... -DCONSUMER_SOURCE_DIR=... -DCXX_COMPILER=... [-DCXX_COMPILER_LAUNCHER=...] \
-#         [-DBUILD_TYPE=...] [-DCONSUMER_FLAGS=...] -P install_tree_check.cmake
+#         [-DBUILD_TYPE=...] [-DCONSUMER_FLAGS=...] [-DPYTHON=... -DPYTHON_DIR=...] -P install_tree_check.cmake
 # install:  a fresh `cmake --install` into WORK_DIR/prefix; the files a user needs are there, and
 #           every installed header's "..." includes resolve inside the installed include folder.
 # consumer: tests/consumer configured with CMAKE_PREFIX_PATH=prefix (find_package), built and run.
 # build-tree: tests/consumer configured against the build tree's package (frictionlab_DIR=build).
 # command:  the installed `frictionlab paper` run from a folder without data/ reads the installed
 #           scenarios, not the source tree's.
+# python:   the installed Python package (PYTHON_DIR under the prefix) imported by PYTHON from
+#           elsewhere: it is the installed one, and evaluates exact at Omega = 0 (F1 = k N).
 # options-off, subproject: frictionlab configured with tests and benchmarks off, and added to
 #           another project with add_subdirectory, on a machine without GoogleTest and Google
 #           Benchmark (CMAKE_DISABLE_FIND_PACKAGE_*): no test or benchmark target is generated.
@@ -124,6 +126,23 @@ elseif(STEP STREQUAL "command")
   endif()
   message(STATUS "the installed command read ${read}")
 
+elseif(STEP STREQUAL "python")
+  set(package ${prefix}/${PYTHON_DIR}/frictionlab)
+  file(GLOB core ${package}/_core*.so)
+  if(NOT EXISTS ${package}/__init__.py OR NOT core)
+    message(FATAL_ERROR "the Python package is not installed in ${package}")
+  endif()
+  # Pure sliding (Omega = 0): F1 = k N = 0.5 * 2 exactly, F2 = M = 0 (friction/law.h).
+  set(check "import frictionlab, os, sys
+where = os.path.realpath(frictionlab.__file__)
+assert where.startswith(os.path.realpath(sys.argv[1])), where
+F1, F2, M = frictionlab.Law('exact')(1.0, 0.0, 0.01, 0.005, 0.3, 2.0, 0.5)
+assert (F1, F2, M) == (1.0, 0.0, 0.0), (F1, F2, M)
+print('imported', where)")
+  run("importing the installed Python package" ${CMAKE_COMMAND} -E env PYTHONPATH=${prefix}/${PYTHON_DIR}
+      ${PYTHON} -c "${check}" ${package})
+  message(STATUS "${run_output}")
+
 elseif(STEP STREQUAL "options-off" OR STEP STREQUAL "subproject")
   # Configure only, on a machine "without" GoogleTest and Google Benchmark.
   set(build ${WORK_DIR}/${STEP})
@@ -153,5 +172,5 @@ elseif(STEP STREQUAL "options-off" OR STEP STREQUAL "subproject")
   message(STATUS "${STEP}: configured without GoogleTest and Google Benchmark")
 
 else()
-  message(FATAL_ERROR "STEP=${STEP}: expected install, consumer, build-tree, command, options-off or subproject")
+  message(FATAL_ERROR "STEP=${STEP}: expected install, consumer, build-tree, command, python, options-off or subproject")
 endif()

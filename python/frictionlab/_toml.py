@@ -1,0 +1,81 @@
+"""A scenario given as a dict, written as TOML text for the C++ scenario reader (the one parser
+of scenarios: a dict and a file are read by the same code, with the same checks and messages).
+
+Numbers are written so that they read back to the same double: floats by ``repr`` (the shortest
+text that round-trips), integers as integers. Only what a scenario holds is accepted: tables
+(dicts), strings, booleans, numbers and lists of numbers or strings.
+"""
+
+import math
+import numbers
+
+__all__ = ["to_toml", "toml_value"]
+
+
+def _key(k):
+    if not isinstance(k, str):
+        raise TypeError(f"scenario key {k!r} is invalid: keys must be strings")
+    if k and all(c.isalnum() and c.isascii() or c in "_-" for c in k):
+        return k
+    return _string(k)
+
+
+def _string(s):
+    out = ['"']
+    for c in s:
+        if c == '"':
+            out.append('\\"')
+        elif c == "\\":
+            out.append("\\\\")
+        elif ord(c) < 0x20 or ord(c) == 0x7F:
+            out.append(f"\\u{ord(c):04X}")
+        else:
+            out.append(c)
+    out.append('"')
+    return "".join(out)
+
+
+def toml_value(v, where="value"):
+    """The TOML text of one value (str, bool, int, float, or a list of them)."""
+    if isinstance(v, bool):
+        return "true" if v else "false"
+    if isinstance(v, str):
+        return _string(v)
+    if isinstance(v, numbers.Integral):
+        return str(int(v))
+    if isinstance(v, numbers.Real):
+        x = float(v)
+        if math.isnan(x):
+            return "nan"
+        if math.isinf(x):
+            return "inf" if x > 0 else "-inf"
+        return repr(x)  # shortest round-trip text: "0.97", "1e-05", "1000.0"
+    if isinstance(v, (list, tuple)) or hasattr(v, "tolist"):
+        items = v.tolist() if hasattr(v, "tolist") else v
+        if not isinstance(items, list):
+            return toml_value(items, where)
+        return "[" + ", ".join(toml_value(x, where) for x in items) + "]"
+    raise TypeError(f"scenario {where} = {v!r} is invalid: a scenario holds tables (dicts), strings, "
+                    f"booleans, numbers and lists of them")
+
+
+def _table(d, path, lines):
+    scalars = [(k, v) for k, v in d.items() if not isinstance(v, dict)]
+    tables = [(k, v) for k, v in d.items() if isinstance(v, dict)]
+    for k, v in scalars:
+        where = ".".join(path + [str(k)])
+        lines.append(f"{_key(k)} = {toml_value(v, where)}")
+    for k, v in tables:
+        sub = path + [str(k)]
+        lines.append("")
+        lines.append("[" + ".".join(_key(p) for p in sub) + "]")
+        _table(v, sub, lines)
+
+
+def to_toml(scenario):
+    """TOML text of a scenario dict such as ``{"body": {...}, "contact": {...}, "run": {...}}``."""
+    if not isinstance(scenario, dict):
+        raise TypeError(f"a scenario must be a dict or a path, not {type(scenario).__name__}")
+    lines = []
+    _table(scenario, [], lines)
+    return "\n".join(lines) + "\n"

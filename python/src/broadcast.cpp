@@ -1,0 +1,128 @@
+#include "broadcast.h"
+
+#include <exception>
+#include <stdexcept>
+
+namespace frictionlab::python {
+namespace {
+
+std::string shape_text(const std::vector<py::ssize_t>& shape) {
+  std::string text = "(";
+  for (std::size_t i = 0; i < shape.size(); ++i) {
+    text += std::to_string(shape[i]);
+    text += shape.size() == 1 ? "," : (i + 1 < shape.size() ? "," : "");
+  }
+  return text + ")";
+}
+
+}  // namespace
+
+BroadcastInputs broadcast_inputs(const std::array<py::handle, 7>& inputs) {
+  BroadcastInputs in;
+  std::size_t ndim = 0;
+  for (std::size_t i = 0; i < inputs.size(); ++i) {
+    // forcecast: ints, bools and float32 become float64; float64 arrays of any strides are views.
+    in.arrays[i] = py::array_t<double, py::array::forcecast>::ensure(inputs[i]);
+    if (!in.arrays[i]) {
+      PyErr_Clear();
+      throw py::type_error(std::string("friction input ") + kInputNames[i] + " = " +
+                           std::string(py::repr(inputs[i])) + " is invalid: it must be a number or an array of numbers");
+    }
+    ndim = std::max(ndim, static_cast<std::size_t>(in.arrays[i].ndim()));
+  }
+  in.shape.assign(ndim, 1);
+  for (const auto& a : in.arrays) {
+    const std::size_t offset = ndim - static_cast<std::size_t>(a.ndim());
+    for (std::size_t d = 0; d < static_cast<std::size_t>(a.ndim()); ++d) {
+      const py::ssize_t n = a.shape(static_cast<py::ssize_t>(d));
+      py::ssize_t& out = in.shape[offset + d];
+      if (n == out || n == 1) continue;
+      if (out != 1) {
+        std::string shapes;
+        for (const auto& b : in.arrays) {
+          shapes += (shapes.empty() ? "" : " ") +
+                    shape_text(std::vector<py::ssize_t>(b.shape(), b.shape() + b.ndim()));
+        }
+        throw py::value_error("operands could not be broadcast together with shapes " + shapes);
+      }
+      out = n;
+    }
+  }
+  in.size = 1;
+  for (const py::ssize_t n : in.shape) in.size *= static_cast<std::size_t>(n);
+  for (std::size_t i = 0; i < in.arrays.size(); ++i) {
+    const auto& a = in.arrays[i];
+    const std::size_t offset = ndim - static_cast<std::size_t>(a.ndim());
+    in.strides[i].assign(ndim, 0);
+    for (std::size_t d = 0; d < static_cast<std::size_t>(a.ndim()); ++d) {
+      const auto dim = static_cast<py::ssize_t>(d);
+      in.strides[i][offset + d] = a.shape(dim) == 1 ? 0 : a.strides(dim);
+    }
+    in.data[i] = reinterpret_cast<const char*>(a.data());
+  }
+  return in;
+}
+
+std::optional<ElementError> evaluate_all(const friction::FrictionLaw& law, const BroadcastInputs& in, double* F1,
+                                         double* F2, double* M) {
+  if (in.size == 0) return std::nullopt;
+  const std::size_t ndim = in.shape.size();
+  // An odometer over every dimension but the last; the last is the inner loop.
+  const std::size_t outer_dims = ndim == 0 ? 0 : ndim - 1;
+  const py::ssize_t inner = ndim == 0 ? 1 : in.shape.back();
+  std::array<py::ssize_t, 7> inner_stride{};
+  for (std::size_t i = 0; i < 7; ++i) inner_stride[i] = ndim == 0 ? 0 : in.strides[i].back();
+  std::vector<py::ssize_t> counter(outer_dims, 0);
+  std::array<const char*, 7> base = in.data;
+  std::size_t flat = 0;
+  while (true) {
+    std::array<const char*, 7> p = base;
+    for (py::ssize_t j = 0; j < inner; ++j, ++flat) {
+      friction::ContactInput c;
+      c.U = *reinterpret_cast<const double*>(p[0]);
+      c.Omega = *reinterpret_cast<const double*>(p[1]);
+      c.a = *reinterpret_cast<const double*>(p[2]);
+      c.b = *reinterpret_cast<const double*>(p[3]);
+      c.psi = *reinterpret_cast<const double*>(p[4]);
+      c.N = *reinterpret_cast<const double*>(p[5]);
+      c.k = *reinterpret_cast<const double*>(p[6]);
+      try {
+        const friction::FrictionForces f = law.evaluate(c);
+        F1[flat] = f.F1;
+        F2[flat] = f.F2;
+        M[flat] = f.M;
+      } catch (const std::invalid_argument& e) {
+        return ElementError{flat, e.what(), true};
+      } catch (const std::exception& e) {
+        return ElementError{flat, e.what(), false};
+      }
+      for (std::size_t i = 0; i < 7; ++i) p[i] += inner_stride[i];
+    }
+    // Next outer index: the last outer dimension fastest (C order).
+    std::size_t d = outer_dims;
+    while (d > 0) {
+      --d;
+      for (std::size_t i = 0; i < 7; ++i) base[i] += in.strides[i][d];
+      if (++counter[d] < in.shape[d]) break;
+      for (std::size_t i = 0; i < 7; ++i) base[i] -= in.strides[i][d] * in.shape[d];
+      counter[d] = 0;
+      if (d == 0) return std::nullopt;
+    }
+    if (outer_dims == 0) return std::nullopt;
+  }
+}
+
+std::string element_name(std::size_t index, const std::vector<py::ssize_t>& shape) {
+  if (shape.empty()) return "";
+  std::vector<std::size_t> at(shape.size());
+  for (std::size_t d = shape.size(); d-- > 0;) {
+    const auto n = static_cast<std::size_t>(shape[d]);
+    at[d] = index % n;
+    index /= n;
+  }
+  std::string text = "[";
+  for (std::size_t d = 0; d < at.size(); ++d) text += (d ? ", " : "") + std::to_string(at[d]);
+  return text + "]";
+}
+
+}  // namespace frictionlab::python

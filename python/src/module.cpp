@@ -1,0 +1,18 @@
+// The extension module frictionlab._core; the package frictionlab (python/frictionlab/) is its
+// public face (docs/python.md).
+
+#include <pybind11/pybind11.h>
+
+#include "bindings.h"
+#include "friction/support/checked_output.h"
+
+PYBIND11_MODULE(_core, m) {
+  namespace py = pybind11;
+  m.doc() = "frictionlab's compiled core; use the package frictionlab (docs/python.md).";
+  // A file that cannot be written is an OSError in Python, as a failed open() would be.
+  py::register_exception<frictionlab::support::OutputError>(m, "OutputError", PyExc_OSError);
+  frictionlab::python::bind_laws(m);
+  frictionlab::python::bind_simulate(m);
+  frictionlab::python::bind_accuracy(m);
+  frictionlab::python::bind_python_laws(m);
+}

@@ -1,0 +1,148 @@
+"""frictionlab.simulate: the command line's run, bit for bit; dicts; interrupts; progress."""
+
+import json
+import os
+import signal
+import threading
+import tomllib
+
+import numpy as np
+import pytest
+
+import frictionlab
+from conftest import bits, read_csv_columns, run_cli
+
+# Fields of summary.json that measure the machine, not the run.
+TIMING = ("wall_time_s",)
+
+
+def without_timing(summary):
+    return {k: v for k, v in summary.items() if k not in TIMING}
+
+
+def assert_same_trajectory(result, csv_columns):
+    assert list(result.trajectory) == list(csv_columns)
+    for name, column in csv_columns.items():
+        got = result.trajectory[name]
+        if name == "in_contact":
+            assert got.dtype == bool
+            np.testing.assert_array_equal(got, column != 0)
+        else:
+            assert got.dtype == np.float64
+            np.testing.assert_array_equal(bits(got), bits(column), err_msg=name)
+
+
+@pytest.mark.parametrize("scenario,sets", [
+    ("sphere-sliding.toml", []),
+    ("egg-printed-a.toml", ["run.t_end=0.5"]),
+    ("egg-homogeneous-b.toml", ["run.t_end=0.3", "contact.law=pade-printed-minor"]),
+])
+def test_simulate_equals_the_command_line_bit_for_bit(cli, scenarios, tmp_path, scenario, sets):
+    path = os.path.join(scenarios, scenario)
+    args = ["simulate", path, "--out", tmp_path / "cli"]
+    for s in sets:
+        args += ["--set", s]
+    run_cli(cli, *args)
+    result = frictionlab.simulate(path, overrides=sets)
+    with open(tmp_path / "cli" / "summary.json") as f:
+        expected = json.load(f)
+    assert without_timing(result.summary) == without_timing(expected)
+    assert_same_trajectory(result, read_csv_columns(tmp_path / "cli" / "trajectory.csv"))
+    assert result.scenario_toml == (tmp_path / "cli" / "scenario.toml").read_text()
+    assert result.out is None
+    assert result.t[-1] == result.summary["final_time"]
+
+
+def test_out_writes_the_command_lines_files(cli, scenarios, tmp_path):
+    path = os.path.join(scenarios, "sphere-spinning.toml")
+    run_cli(cli, "simulate", path, "--law", "coulomb-decoupled", "--set", "run.t_end=0.2", "--out", tmp_path / "cli")
+    result = frictionlab.simulate(path, law="coulomb-decoupled", overrides={"run.t_end": 0.2}, out=tmp_path / "py")
+    assert result.out == str(tmp_path / "py")
+    for name in ("trajectory.csv", "scenario.toml"):
+        assert (tmp_path / "py" / name).read_bytes() == (tmp_path / "cli" / name).read_bytes(), name
+    with open(tmp_path / "py" / "summary.json") as f:
+        assert without_timing(json.load(f)) == without_timing(result.summary)
+
+
+def test_a_dict_runs_like_the_file_it_was_read_from(cli, scenarios, tmp_path):
+    path = os.path.join(scenarios, "egg-printed-a.toml")
+    with open(path, "rb") as f:
+        scenario = tomllib.load(f)
+    run_cli(cli, "simulate", path, "--set", "run.t_end=0.4", "--out", tmp_path / "cli")
+    result = frictionlab.simulate(scenario, overrides={"run.t_end": 0.4})
+    assert_same_trajectory(result, read_csv_columns(tmp_path / "cli" / "trajectory.csv"))
+    with open(tmp_path / "cli" / "summary.json") as f:
+        expected = without_timing(json.load(f))
+    got = without_timing(result.summary)
+    # Only where the scenario came from differs.
+    assert got["scenario"]["source"] == "egg-printed-a" and expected["scenario"]["source"] == path
+    del got["scenario"]["source"], expected["scenario"]["source"]
+    assert got == expected
+
+
+def test_bad_input_raises_the_command_lines_message(cli, scenarios, tmp_path):
+    path = os.path.join(scenarios, "sphere-sliding.toml")
+    done = run_cli(cli, "simulate", path, "--set", "run.t_end=-1", "--out", tmp_path / "x", check=False)
+    assert done.returncode == 1
+    message = done.stderr.removeprefix("frictionlab: error: ").strip()
+    with pytest.raises(ValueError) as e:
+        frictionlab.simulate(path, overrides=["run.t_end=-1"])
+    assert str(e.value) == message
+    with pytest.raises(ValueError, match="unknown key run.bogus"):
+        frictionlab.simulate(path, overrides={"run.bogus": 1})
+    done = run_cli(cli, "simulate", path, "--law", "nope", "--out", tmp_path / "x", check=False)
+    with pytest.raises(ValueError) as e:
+        frictionlab.simulate(path, law="nope")
+    assert str(e.value) == done.stderr.removeprefix("frictionlab: error: --").strip()
+    with pytest.raises(ValueError, match="body"):
+        frictionlab.simulate({"name": "empty"})
+    with pytest.raises(TypeError):
+        frictionlab.simulate({"run": {"t_end": object()}})
+
+
+def test_progress_is_called_and_can_stop_the_run(scenarios):
+    path = os.path.join(scenarios, "egg-printed-a.toml")
+    seen = []
+
+    def progress(t, t_end):
+        seen.append((t, t_end))
+        return len(seen) < 3
+
+    result = frictionlab.simulate(path, progress=progress)
+    assert len(seen) == 3
+    assert all(t_end == 1000.0 for _, t_end in seen)
+    assert [t for t, _ in seen] == sorted(t for t, _ in seen)
+    assert result.reason == "interrupted"
+    assert result.t[-1] == result.summary["final_time"] >= seen[-1][0]
+    assert len(result.t) == result.summary["output"]["trajectory_rows"]
+
+
+def test_an_exception_in_progress_stops_the_run_and_is_raised(scenarios):
+    class Stop(Exception):
+        pass
+
+    def progress(t, t_end):
+        raise Stop("enough")
+
+    with pytest.raises(Stop) as e:
+        frictionlab.simulate(os.path.join(scenarios, "egg-printed-a.toml"), progress=progress)
+    assert e.value.frictionlab_result.reason == "interrupted"
+
+
+def test_ctrl_c_stops_the_run_and_keeps_what_ran(scenarios, tmp_path):
+    # egg-printed-a runs ~120 s of simulated time (seconds of wall time); SIGINT comes at 0.3 s.
+    timer = threading.Timer(0.3, os.kill, (os.getpid(), signal.SIGINT))
+    timer.start()
+    try:
+        with pytest.raises(frictionlab.Interrupted) as e:
+            frictionlab.simulate(os.path.join(scenarios, "egg-printed-a.toml"), out=tmp_path)
+    finally:
+        timer.cancel()
+    result = e.value.result
+    assert isinstance(e.value, KeyboardInterrupt)
+    assert result.reason == "interrupted"
+    assert 0 < result.summary["final_time"] < 120
+    assert result.t[-1] == result.summary["final_time"]
+    with open(tmp_path / "summary.json") as f:
+        assert json.load(f)["termination"]["reason"] == "interrupted"
+    assert_same_trajectory(result, read_csv_columns(tmp_path / "trajectory.csv"))
