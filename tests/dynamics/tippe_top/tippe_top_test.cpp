@@ -5,9 +5,12 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <limits>
+#include <string>
+#include <vector>
 
 #include "dynamics/body.h"
 #include "dynamics/scenario.h"
@@ -77,6 +80,16 @@ TEST(DynTippeTopObservables, JellettsQuantityIsAngularMomentumDotContactPoint) {
 
 // Without a spin moment L.r is an exact integral of the motion of a sphere, whatever the sliding
 // force (dynamics/tippe_top/tippe_top_observables.h).
+// The spin moment's effect is the study's point: its default set must run the decoupled law with
+// the exact pure-spin torque and without any spin moment, now that the registry has them.
+TEST(DynTippeTopStudy, DefaultLawsIncludeTheSpinMomentVariants) {
+  std::vector<std::string> unavailable;
+  const auto laws = default_tippe_top_laws(&unavailable);
+  EXPECT_TRUE(unavailable.empty());
+  for (const std::string spec : {"exact", "decoupled", "decoupled:r_spin=0"})
+    EXPECT_EQ(std::count(laws.begin(), laws.end(), spec), 1) << spec;
+}
+
 TEST(DynTippeTop, JellettsQuantityIsConservedWithoutASpinMoment) {
   const Scenario s = load_scenario(kScenario, {"run.t_end=0.5", "run.output_dt=1e-3"});
   const testing::SlideOnlyTestLaw law;
