@@ -34,21 +34,9 @@ struct EnsembleCliOptions {
 
 void run(const EnsembleCliOptions& opt) {
   namespace ens = dynamics::ensemble;
-  if (opt.threads < 0)
-    throw support::invalid_value("--threads", static_cast<long long>(opt.threads), "it must be >= 0 (0: one per core)");
-  ens::JobOptions job;
-  job.study = opt.study;
-  job.out = opt.out;
-  job.threads = opt.threads;
-  job.resume = opt.resume;
-  job.trajectories = opt.hdf5;
-  job.figures = !opt.no_figures;
+  ens::JobOptions job = ens::ensemble_job_options(opt.study, opt.out, opt.threads, opt.resume, opt.hdf5, !opt.no_figures);
   job.log = stderr;
   job.live = isatty(STDERR_FILENO) != 0;
-  job.command = "frictionlab ensemble " + opt.study + " --out " + opt.out;
-  if (opt.threads != 0) job.command += " --threads " + std::to_string(opt.threads);
-  if (opt.hdf5) job.command += " --hdf5";
-
   ens::JobOutcome outcome;
   {
     // Ctrl-C, kill or a lost terminal: the runs in flight stop between steps (not recorded), the

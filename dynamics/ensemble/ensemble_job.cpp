@@ -6,8 +6,25 @@
 #include "dynamics/ensemble/ensemble_report.h"
 #include "dynamics/ensemble/mpi_ensemble.h"
 #include "dynamics/ensemble/thread_pool.h"
+#include "friction/support/errors.h"
 
 namespace frictionlab::dynamics::ensemble {
+
+JobOptions ensemble_job_options(const std::string& study, const std::string& out, int threads, bool resume,
+                                bool trajectories, bool figures) {
+  if (threads < 0) throw support::invalid_value("--threads", static_cast<long long>(threads), "it must be >= 0 (0: one per core)");
+  JobOptions job;
+  job.study = study;
+  job.out = out;
+  job.threads = threads;
+  job.resume = resume;
+  job.trajectories = trajectories;
+  job.figures = figures;
+  job.command = "frictionlab ensemble " + study + " --out " + out;
+  if (threads != 0) job.command += " --threads " + std::to_string(threads);
+  if (trajectories) job.command += " --hdf5";
+  return job;
+}
 
 JobOutcome finish_job(EnsembleSession& session, const JobOptions& options, JobOutcome outcome) {
   outcome.summary = session.finish();
@@ -33,6 +50,7 @@ JobOutcome run_ensemble_job_on_threads(const JobOptions& options) {
   so.log = options.log;
   so.live = options.live;
   so.command = options.command;
+  so.on_progress = options.on_progress;
   EnsembleSession session(plan, so);
   JobOutcome outcome;
   outcome.threads = thread_count(options.threads);

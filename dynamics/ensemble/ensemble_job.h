@@ -6,6 +6,7 @@
 #include <atomic>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <string>
 
 #include "dynamics/ensemble/ensemble_session.h"
@@ -23,7 +24,15 @@ struct JobOptions {
   bool live = false;            ///< stderr is a terminal
   const std::atomic<bool>* cancel = nullptr;  ///< Ctrl-C
   std::string command;          ///< as typed, for the manifest and the report
+  std::function<void(long, long)> on_progress;  ///< (runs done, runs of the study) after each run, or empty
 };
+
+/// The job of `frictionlab ensemble STUDY --out OUT [--threads N] [--resume] [--hdf5]
+/// [--no-figures]`, its command recorded as typed; the caller adds log, live, cancel and
+/// on_progress. std::invalid_argument if threads < 0. The command and the Python module both
+/// build their job here.
+[[nodiscard]] JobOptions ensemble_job_options(const std::string& study, const std::string& out, int threads,
+                                              bool resume, bool trajectories, bool figures);
 
 /// What coordinating the MPI ranks cost (rank 0's view; zero without MPI).
 struct CoordinationCost {

@@ -82,6 +82,7 @@ EnsembleSession::EnsembleSession(const EnsemblePlan& plan, SessionOptions option
 }
 
 void EnsembleSession::record(FinishedRun&& run) {
+  long done = 0;
   {
     const std::lock_guard<std::mutex> lock(mutex_);
     if (!summary_.output_error.empty()) return;
@@ -99,8 +100,10 @@ void EnsembleSession::record(FinishedRun&& run) {
     } else if (run.record.final_class == "stopped") {
       ++summary_.early_now;
     }
+    done = summary_.done_before + summary_.done_now;
   }
   progress_->run_finished();
+  if (options_.on_progress) options_.on_progress(done, summary_.total);
 }
 
 SessionSummary EnsembleSession::finish() {

@@ -11,6 +11,7 @@
 #include <atomic>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -31,6 +32,9 @@ struct SessionOptions {
   std::FILE* log = nullptr;    ///< progress (stderr), or null
   bool live = false;           ///< redraw the progress line (a terminal)
   std::string command;         ///< the command line, for the manifest and the report
+  /// Called after each run is recorded, from the worker threads, with (runs done, runs of the
+  /// study); must be thread-safe and quick (the Python module polls what it stores). May be empty.
+  std::function<void(long, long)> on_progress;
 };
 
 struct SessionSummary {

@@ -326,6 +326,7 @@ JobOutcome run_ensemble_job_mpi(const JobOptions& options) {
     so.log = options.log;
     so.live = options.live;
     so.command = options.command;
+    so.on_progress = options.on_progress;
     session = std::make_unique<EnsembleSession>(*plan, so);
   } catch (...) {
     // Tell the workers to stop before their first task.

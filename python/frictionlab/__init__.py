@@ -8,6 +8,7 @@ SI units everywhere (m, s, kg, N, rad). The functions run the same compiled code
 * :func:`simulate` runs a scenario (a TOML file, or a dict shaped like one) and returns its
   summary and trajectory (:class:`SimulationResult`).
 * :func:`accuracy` compares laws with the exact one on a grid (:class:`AccuracyResult`).
+* :func:`ensemble` runs a study file of many runs (:class:`EnsembleResult`).
 * :func:`register_law` adds a law written in Python, usable by name everywhere a law is.
 
 docs/python.md is the guide; docs/model.md states the conventions (the directions e1, e2, the
@@ -18,6 +19,7 @@ from ._version import __version__
 from ._core import Law, law_specs, laws
 from ._simulate import Interrupted, SimulationResult, simulate
 from ._accuracy import AccuracyResult, accuracy
+from ._ensemble import EnsembleInterrupted, EnsembleResult, ensemble
 from ._custom_law import register_law, unregister_law
 
 __all__ = [
@@ -30,6 +32,9 @@ __all__ = [
     "Interrupted",
     "accuracy",
     "AccuracyResult",
+    "ensemble",
+    "EnsembleResult",
+    "EnsembleInterrupted",
     "register_law",
     "unregister_law",
 ]

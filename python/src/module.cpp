@@ -15,4 +15,5 @@ PYBIND11_MODULE(_core, m) {
   frictionlab::python::bind_simulate(m);
   frictionlab::python::bind_accuracy(m);
   frictionlab::python::bind_python_laws(m);
+  frictionlab::python::bind_ensemble(m);
 }
