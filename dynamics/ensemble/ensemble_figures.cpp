@@ -94,7 +94,8 @@ std::string map_script(const std::string& stem, const std::string& title, const 
   for (const auto& p : panels) {
     const auto [x0, x1] = std::minmax_element(ex.begin(), ex.end());
     const auto [y0, y1] = std::minmax_element(ey.begin(), ey.end());
-    s << "set title " << gnuplot_quoted(p.title) << "\nset xrange [" << num(*x0) << ":" << num(*x1) << "]\nset yrange ["
+    // noenhanced: a law spec's '_' (decoupled:r_spin=0) is text, not a subscript.
+    s << "set title " << gnuplot_quoted(p.title) << " noenhanced\nset xrange [" << num(*x0) << ":" << num(*x1) << "]\nset yrange ["
       << num(*y0) << ":" << num(*y1) << "]\n"
       << "plot " << gnuplot_quoted(p.data) << " using 1:2:3:4:5:6 with boxxyerror lc rgb '#bdbdbd' notitle, \\\n"
       << "     " << gnuplot_quoted(p.data) << " using 1:2:3:4:5:6:7 with boxxyerror lc palette notitle\n";
@@ -169,7 +170,7 @@ void divergence_figure(Writer& w, const std::string& title, const std::vector<st
     const bool floor = c + 1 == curves.size();
     plot << (any ? ", \\\n     " : "plot ") << gnuplot_quoted(file) << " using 1:2 with steps lw 2 dt "
          << (floor ? 1 : static_cast<int>(c % 4) + 2) << " lc rgb "
-         << gnuplot_quoted(floor ? kColours[0] : kColours[(c + 1) % 7]) << " title " << gnuplot_quoted(name);
+         << gnuplot_quoted(floor ? kColours[0] : kColours[(c + 1) % 7]) << " title " << gnuplot_quoted(name) << " noenhanced";
     any = true;
   }
   if (!any) return;
