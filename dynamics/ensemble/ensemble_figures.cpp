@@ -21,6 +21,10 @@ constexpr const char* kColours[] = {"#000000", "#1f77b4", "#ff7f0e", "#2ca02c", 
 // Outcome classes and their colours (the classes of run_record.h).
 const std::vector<std::pair<std::string, std::string>> kClasses = {
     {"pole+", "#4575b4"}, {"pole-", "#d73027"}, {"tilted", "#fee090"}, {"stopped", "#636363"}, {"failed", "#000000"}};
+// The puck's (run_record.h: puck_outcome_class).
+const std::vector<std::pair<std::string, std::string>> kPuckClasses = {
+    {"together", "#1a9850"}, {"slip-first", "#4575b4"}, {"spin-first", "#d73027"}, {"moving", "#fee090"},
+    {"rest", "#c2a5cf"},     {"stopped", "#636363"},    {"failed", "#000000"}};
 const std::vector<std::pair<CellChange, std::string>> kChanges = {{CellChange::same, "#e0e0e0"},
                                                                   {CellChange::mixed, "#fdae61"},
                                                                   {CellChange::changed, "#d7191c"},
@@ -90,7 +94,8 @@ std::string map_script(const std::string& stem, const std::string& title, const 
   for (const auto& p : panels) {
     const auto [x0, x1] = std::minmax_element(ex.begin(), ex.end());
     const auto [y0, y1] = std::minmax_element(ey.begin(), ey.end());
-    s << "set title " << gnuplot_quoted(p.title) << "\nset xrange [" << num(*x0) << ":" << num(*x1) << "]\nset yrange ["
+    // noenhanced: a law spec's '_' (decoupled:r_spin=0) is text, not a subscript.
+    s << "set title " << gnuplot_quoted(p.title) << " noenhanced\nset xrange [" << num(*x0) << ":" << num(*x1) << "]\nset yrange ["
       << num(*y0) << ":" << num(*y1) << "]\n"
       << "plot " << gnuplot_quoted(p.data) << " using 1:2:3:4:5:6 with boxxyerror lc rgb '#bdbdbd' notitle, \\\n"
       << "     " << gnuplot_quoted(p.data) << " using 1:2:3:4:5:6:7 with boxxyerror lc palette notitle\n";
@@ -165,7 +170,7 @@ void divergence_figure(Writer& w, const std::string& title, const std::vector<st
     const bool floor = c + 1 == curves.size();
     plot << (any ? ", \\\n     " : "plot ") << gnuplot_quoted(file) << " using 1:2 with steps lw 2 dt "
          << (floor ? 1 : static_cast<int>(c % 4) + 2) << " lc rgb "
-         << gnuplot_quoted(floor ? kColours[0] : kColours[(c + 1) % 7]) << " title " << gnuplot_quoted(name);
+         << gnuplot_quoted(floor ? kColours[0] : kColours[(c + 1) % 7]) << " title " << gnuplot_quoted(name) << " noenhanced";
     any = true;
   }
   if (!any) return;
@@ -181,24 +186,29 @@ void divergence_figure(Writer& w, const std::string& title, const std::vector<st
 
 double t_vertical_of(const RunRecord& r) { return r.t_vertical; }
 double final_gamma3_of(const RunRecord& r) { return r.final_gamma3; }
+double log10_ratio_of(const RunRecord& r) {
+  return r.puck.terminal_ratio > 0.0 ? std::log10(r.puck.terminal_ratio) : std::numeric_limits<double>::quiet_NaN();
+}
+double lateral_mm_of(const RunRecord& r) { return 1e3 * r.puck.path_lateral; }
 
 void map_figures(Writer& w, const std::string& title, const std::vector<std::string>& laws,
-                 const std::vector<RunRecord>& rows, const OutcomeMap& m) {
+                 const std::vector<RunRecord>& rows, const OutcomeMap& m, RunModel model) {
   const GridAxes& a = m.axes;
+  const auto& classes = model == RunModel::puck ? kPuckClasses : kClasses;
   // Outcome classes.
   {
     std::vector<Panel> panels;
     for (const auto& lm : m.laws) {
       std::vector<double> code(m.cells(), std::numeric_limits<double>::quiet_NaN());
       for (std::size_t c = 0; c < m.cells(); ++c)
-        for (std::size_t k = 0; k < kClasses.size(); ++k)
-          if (lm.majority_class[c] == kClasses[k].first) code[c] = static_cast<double>(k);
+        for (std::size_t k = 0; k < classes.size(); ++k)
+          if (lm.majority_class[c] == classes[k].first) code[c] = static_cast<double>(k);
       const std::string file = "map-final_class-" + lm.law + ".dat";
       w.data(file, map_data(a, code));
       panels.push_back({lm.law, file});
     }
     w.figure("map-final_class", map_script("map-final_class", title + ": where the runs end (most replicas)", a, panels,
-                                           discrete_palette(kClasses)));
+                                           discrete_palette(classes)));
   }
   // Medians of two features.
   struct Mapped {
@@ -207,6 +217,30 @@ void map_figures(Writer& w, const std::string& title, const std::vector<std::str
     double (*value)(const RunRecord&);
     const char* palette;
   };
+  const auto draw_medians = [&](const auto& mapped) {
+    for (const auto& f : mapped) {
+      std::vector<Panel> panels;
+      for (const auto& law : laws) {
+        const std::string file = std::string("map-") + f.name + "-" + law + ".dat";
+        w.data(file, map_data(a, cell_medians(a, law, rows, f.value)));
+        panels.push_back({law, file});
+      }
+      w.figure(std::string("map-") + f.name,
+               map_script(std::string("map-") + f.name, title + ": " + f.what, a, panels, f.palette));
+    }
+  };
+  if (model == RunModel::puck) {
+    // The ratio at the first stop on a log scale, 1e-3 .. 1e3 (beyond: saturated); the path's end
+    // across the initial velocity, -3 .. 3 mm (the exact law's range on a 2:1 plate; beyond:
+    // saturated), one colour scale for every law.
+    const Mapped mapped[] = {
+        {"log10_terminal_ratio", "log10 U/(a|Ω|) at the first stop (grey: none)", &log10_ratio_of,
+         "set palette defined (-3 '#4575b4', 0 '#ffffbf', 3 '#d73027')\nset cbrange [-3:3]\n"},
+        {"path_lateral", "end of the path across the initial velocity, mm (to its left; grey: none)", &lateral_mm_of,
+         "set palette defined (-3 '#4575b4', 0 '#f7f7f7', 3 '#d73027')\nset cbrange [-3:3]\n"},
+    };
+    draw_medians(mapped);
+  }
   // The time to the vertical on a log colour scale over the values there are (1 to 1000 s if none).
   double lo = std::numeric_limits<double>::infinity();
   double hi = 0.0;
@@ -226,16 +260,7 @@ void map_figures(Writer& w, const std::string& title, const std::vector<std::str
       {"final_gamma3", "median final γ_3 (grey: no run ended normally)", &final_gamma3_of,
        "set palette defined (-1 '#d73027', 0 '#ffffbf', 1 '#4575b4')\nset cbrange [-1:1]\n"},
   };
-  for (const auto& f : mapped) {
-    std::vector<Panel> panels;
-    for (const auto& law : laws) {
-      const std::string file = std::string("map-") + f.name + "-" + law + ".dat";
-      w.data(file, map_data(a, cell_medians(a, law, rows, f.value)));
-      panels.push_back({law, file});
-    }
-    w.figure(std::string("map-") + f.name,
-             map_script(std::string("map-") + f.name, title + ": " + f.what, a, panels, f.palette));
-  }
+  if (model == RunModel::body) draw_medians(mapped);
   // Where a law changes the outcome.
   if (m.laws.size() > 1) {
     std::vector<Panel> panels;
@@ -260,14 +285,15 @@ void map_figures(Writer& w, const std::string& title, const std::vector<std::str
 }  // namespace
 
 FiguresOutcome write_figures(const std::filesystem::path& dir, const std::string& title, const std::vector<std::string>& laws,
-                             const std::vector<RunRecord>& rows, const std::optional<OutcomeMap>& map, bool draw) {
+                             const std::vector<RunRecord>& rows, const std::optional<OutcomeMap>& map, bool draw,
+                             RunModel model) {
   const std::filesystem::path figures = dir / "figures";
   std::error_code ec;
   std::filesystem::create_directories(figures, ec);
   if (ec) throw support::OutputError("cannot create '" + figures.string() + "': " + ec.message());
   Writer w(figures, draw);
-  divergence_figure(w, title, laws, rows);
-  if (map) map_figures(w, title, laws, rows, *map);
+  if (model == RunModel::body) divergence_figure(w, title, laws, rows);
+  if (map) map_figures(w, title, laws, rows, *map, model);
   return w.out;
 }
 

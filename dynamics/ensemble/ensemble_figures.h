@@ -10,6 +10,9 @@
 //                             cell end in, one panel per law;
 //   map-t_vertical.png        the median time to the vertical (grey: never reached);
 //   map-final_gamma3.png      the median final gamma3;
+//   map-log10_terminal_ratio.png, map-path_lateral.png   (a puck study, instead of the two above
+//                             and of divergence.png) the median ratio U/(a|Omega|) at the first
+//                             stop, in log10, and the path's end across the initial velocity;
 //   map-changes.png           per law but the reference: where its outcome class differs from
 //                             the reference's beyond the reference's own replicas
 //                             (dynamics/ensemble/outcome_map.h).
@@ -33,6 +36,7 @@ struct FiguresOutcome {
 /// `title` heads every figure. Throws support::OutputError if a data file cannot be written.
 [[nodiscard]] FiguresOutcome write_figures(const std::filesystem::path& dir, const std::string& title,
                                            const std::vector<std::string>& laws, const std::vector<RunRecord>& rows,
-                                           const std::optional<OutcomeMap>& map, bool draw);
+                                           const std::optional<OutcomeMap>& map, bool draw,
+                                           RunModel model = RunModel::body);
 
 }  // namespace frictionlab::dynamics::ensemble

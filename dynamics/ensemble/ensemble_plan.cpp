@@ -74,12 +74,23 @@ EnsemblePlan EnsemblePlan::make(const Study& study) {
     const std::string text = read_text(study.scenario);
     try {
       p.document_ = std::make_shared<const ScenarioDocument>(ScenarioDocument::parse(text, study.scenario.string()));
-      p.base_ = std::make_shared<const Scenario>(p.document_->resolve(study.set));
+      p.model_ = run_model_from(p.document_->model(study.set));
+      if (p.model_ == RunModel::puck)
+        p.puck_base_ = std::make_shared<const puck::PuckScenario>(puck::resolve_puck(*p.document_, study.set));
+      else
+        p.base_ = std::make_shared<const Scenario>(p.document_->resolve(study.set));
     } catch (const std::invalid_argument& e) {
       throw support::invalid_value("scenario (with the study's set)", study.scenario.string(), e.what());
     }
-    p.hash_ = hex16(fnv1a64(p.base_->resolved_toml, fnv1a64(std::string_view("\0", 1), fnv1a64(study.canonical))));
-    p.rate_scale_ = body_scales(p.base_->body, p.base_->contact).rate;
+    const std::string& resolved = p.model_ == RunModel::puck ? p.puck_base_->resolved_toml : p.base_->resolved_toml;
+    p.hash_ = hex16(fnv1a64(resolved, fnv1a64(std::string_view("\0", 1), fnv1a64(study.canonical))));
+    if (p.model_ == RunModel::puck) {
+      if (study.replicas > 1)
+        throw support::invalid_value("replicas.count", static_cast<long long>(study.replicas),
+                                     "a puck study has 1: the puck's motion is not chaotic, a replica would repeat its start's run");
+    } else {
+      p.rate_scale_ = body_scales(p.base_->body, p.base_->contact).rate;
+    }
 
     for (std::size_t i = 0; i < study.laws.size(); ++i) {
       try {
@@ -89,7 +100,8 @@ EnsemblePlan EnsemblePlan::make(const Study& study) {
       }
     }
     for (std::size_t i = 0; i < study.vary.size(); ++i)
-      p.keys_.push_back(VariedKey::parse(study.vary[i].key, "vary[" + std::to_string(i) + "].key"));
+      p.keys_.push_back(
+          VariedKey::parse(study.vary[i].key, "vary[" + std::to_string(i) + "].key", p.model_ == RunModel::puck));
     // Each key at its extremes, the others at their minimum: a key the scenario does not know,
     // or a range it rejects, is an error now rather than a thousand failed runs.
     std::vector<double> lows;
@@ -99,10 +111,15 @@ EnsemblePlan EnsemblePlan::make(const Study& study) {
         std::vector<double> v = lows;
         v[i] = x;
         try {
-          const StartState s = apply_start(p.base_->initial, p.keys_, v);
           std::vector<std::string> o = study.set;
-          for (auto& e : start_overrides(s)) o.push_back(std::move(e));
-          (void)p.document_->resolve(o);
+          if (p.model_ == RunModel::puck) {
+            for (auto& e : puck_start_overrides(p.puck_base_->initial.v, p.keys_, v)) o.push_back(std::move(e));
+            (void)puck::resolve_puck(*p.document_, o);
+          } else {
+            const StartState s = apply_start(p.base_->initial, p.keys_, v);
+            for (auto& e : start_overrides(s)) o.push_back(std::move(e));
+            (void)p.document_->resolve(o);
+          }
         } catch (const std::invalid_argument& e) {
           throw support::invalid_value("vary[" + std::to_string(i) + "]", std::string_view(study.vary[i].key),
                                        std::string("at ") + (x == study.vary[i].min ? "min" : "max") + ": " + e.what());
@@ -126,6 +143,12 @@ RunId EnsemblePlan::run_id(long index) const {
 }
 
 std::vector<std::string> EnsemblePlan::overrides(const RunId& id) const {
+  if (model_ == RunModel::puck) {
+    std::vector<std::string> o = study_->set;
+    for (auto& e : puck_start_overrides(puck_base_->initial.v, keys_, start_values(id.start))) o.push_back(std::move(e));
+    o.push_back("contact.law=" + study_->laws.at(static_cast<std::size_t>(id.law)));
+    return o;
+  }
   StartState s = apply_start(base_->initial, keys_, start_values(id.start));
   s = perturb_replica(std::move(s), study_->replica_size, rate_scale_, study_->seed, id.start, id.replica);
   std::vector<std::string> o = study_->set;
@@ -135,6 +158,10 @@ std::vector<std::string> EnsemblePlan::overrides(const RunId& id) const {
 }
 
 Scenario EnsemblePlan::scenario(const RunId& id) const { return document_->resolve(overrides(id)); }
+
+puck::PuckScenario EnsemblePlan::puck_scenario(const RunId& id) const {
+  return puck::resolve_puck(*document_, overrides(id));
+}
 
 Task EnsemblePlan::task(long index) const {
   Task t;

@@ -15,14 +15,21 @@
 // (the chaos floor's divergence time). The reference runs first; its trajectory is kept in
 // memory only while the task runs, so memory does not grow with the number of runs
 // (docs/ensembles.md §2). A study with one replica has tasks of one replica.
+//
+// The model is the base scenario's (dynamics/ensemble/run_model.h). A puck scenario's runs are its
+// file resolved with the study's `set`, the start's keys (varied_key.h: puck_start_overrides) and
+// the law; a puck study has one replica (the puck's motion is not chaotic: a replica would repeat
+// its start's run, so its floor is zero, dynamics/ensemble/feature_comparison.h).
 
 #include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
 
+#include "dynamics/ensemble/run_model.h"
 #include "dynamics/ensemble/study.h"
 #include "dynamics/ensemble/varied_key.h"
+#include "dynamics/puck/puck_scenario.h"
 #include "dynamics/scenario.h"
 
 namespace frictionlab::dynamics::ensemble {
@@ -65,6 +72,10 @@ class EnsemblePlan {
   /// The run's scenario, resolved (throws std::invalid_argument if this start's values make an
   /// invalid scenario: the run is then recorded as failed).
   [[nodiscard]] Scenario scenario(const RunId& id) const;
+  /// The same for a puck study (model() == RunModel::puck).
+  [[nodiscard]] puck::PuckScenario puck_scenario(const RunId& id) const;
+  /// The model every run of the study integrates.
+  [[nodiscard]] RunModel model() const { return model_; }
 
   [[nodiscard]] long tasks() const { return starts() * pairs_per_start(); }
   [[nodiscard]] Task task(long index) const;
@@ -72,13 +83,15 @@ class EnsemblePlan {
 
   /// 16 hexadecimal digits: FNV-1a 64 of Study::canonical, a NUL, the resolved base scenario.
   [[nodiscard]] const std::string& hash() const { return hash_; }
-  /// The base scenario resolved with the study's `set` (its law as the file says).
+  /// The base scenario resolved with the study's `set` (its law as the file says); a body study's.
   [[nodiscard]] const Scenario& base() const { return *base_; }
 
  private:
   std::shared_ptr<const Study> study_;
   std::shared_ptr<const ScenarioDocument> document_;
-  std::shared_ptr<const Scenario> base_;
+  std::shared_ptr<const Scenario> base_;                  // model body
+  std::shared_ptr<const puck::PuckScenario> puck_base_;   // model puck
+  RunModel model_ = RunModel::body;
   std::vector<VariedKey> keys_;
   std::vector<std::vector<double>> starts_;
   double rate_scale_ = 0.0;

@@ -93,7 +93,8 @@ void study_section(std::ostringstream& s, const EnsemblePlan& plan, const std::v
     << " runs per second per core).\n\n";
 }
 
-void runs_section(std::ostringstream& s, const std::vector<std::string>& laws, const std::vector<RunRecord>& rows) {
+void runs_section(std::ostringstream& s, const std::vector<std::string>& laws, const std::vector<RunRecord>& rows,
+                  RunModel model) {
   std::set<std::string> reasons;
   for (const auto& r : rows) reasons.insert(r.reason);
   s << "## How the runs ended\n\n| law | runs |";
@@ -109,20 +110,31 @@ void runs_section(std::ostringstream& s, const std::vector<std::string>& laws, c
     for (const auto& reason : reasons) s << " " << n[reason] << " |";
     s << "\n";
   }
-  s << "\n`rest`, `rolling`, `t_end`: the run ended as the model intends; `law-pole`: the law's denominator "
-       "passed through 0 (the printed Padé law); `max-steps`: the integrator crawled (run.max_steps); "
-       "`stagnation`: a bounce reached U = Ω = 0 while unsettled; `failed`: the run could not start "
-       "(docs/dynamics.md §5).\n\n";
+  if (model == RunModel::puck)
+    s << "\n`rest`: slip and spin both stopped (docs/puck.md §1); `t_end`: still moving at run.t_end; `law-pole`: the "
+         "law's denominator passed through 0; `max-steps`: the integrator crawled (run.max_steps); `failed`: the run "
+         "could not start.\n\n";
+  else
+    s << "\n`rest`, `rolling`, `t_end`: the run ended as the model intends; `law-pole`: the law's denominator "
+         "passed through 0 (the printed Padé law); `max-steps`: the integrator crawled (run.max_steps); "
+         "`stagnation`: a bounce reached U = Ω = 0 while unsettled; `failed`: the run could not start "
+         "(docs/dynamics.md §5).\n\n";
 
-  const auto classes = compare_classes(rows, laws);
+  const auto classes = compare_classes(rows, laws, model);
   std::set<std::string> names;
   for (const auto& c : classes)
     for (const auto& [k, v] : c.counts) names.insert(k);
-  s << "## Where the runs end: outcome classes\n\n"
-       "`pole+` / `pole-`: ended within 8.1° of the vertical with γ3 → +1 / −1 (the pole at z_lo / z_hi touches); "
-       "`tilted`: ended elsewhere; `stopped`: stopped early (law-pole, max-steps, stagnation, ...). Total variation "
-       "(TV) and chi-square p against the reference; the floor: the same between the reference's even and odd "
-       "replicas.\n\n| law |";
+  s << "## Where the runs end: outcome classes\n\n";
+  if (model == RunModel::puck)
+    s << "By the ratio U/(a|Ω|) at the first of the two stops: `together` within a decade of 1, `slip-first` "
+         "below 0.1, `spin-first` above 10; `moving`: still moving at t_end; `stopped`: stopped early (law-pole, "
+         "max-steps, ...). Total variation (TV) and chi-square p against the reference; the floor is zero: the "
+         "puck's motion is not chaotic, the same start gives the same run.\n\n| law |";
+  else
+    s << "`pole+` / `pole-`: ended within 8.1° of the vertical with γ3 → +1 / −1 (the pole at z_lo / z_hi touches); "
+         "`tilted`: ended elsewhere; `stopped`: stopped early (law-pole, max-steps, stagnation, ...). Total variation "
+         "(TV) and chi-square p against the reference; the floor: the same between the reference's even and odd "
+         "replicas.\n\n| law |";
   for (const auto& k : names) s << " " << k << " |";
   s << " TV | p | floor TV | floor p | verdict |\n|---|";
   for (std::size_t i = 0; i < names.size(); ++i) s << "---|";
@@ -139,7 +151,8 @@ void runs_section(std::ostringstream& s, const std::vector<std::string>& laws, c
   s << "\n";
 }
 
-void features_section(std::ostringstream& s, const std::vector<std::string>& laws, const std::vector<RunRecord>& rows) {
+void features_section(std::ostringstream& s, const std::vector<std::string>& laws, const std::vector<RunRecord>& rows,
+                      RunModel model) {
   s << "## Does the law change the motion? Features against the chaos floor\n\n"
     << "Per feature, over the runs that ended normally: quantiles (5, 25, 50, 75, 95 %), and the law's "
        "distance to the reference's distribution: Wasserstein-1 (W1, in the feature's unit) and "
@@ -149,9 +162,13 @@ void features_section(std::ostringstream& s, const std::vector<std::string>& law
     << " × floor W1; *within chaos* when neither holds; *unclear* when one does; *negligible* when W1 is at most "
        "the feature's resolution, the smallest difference that means anything for it (given in each heading) "
        "(docs/ensembles.md).\n\n";
-  const auto comparisons = compare_features(rows, laws);
+  if (floor_is_zero(model))
+    s << "The floor is **zero** here: the puck's motion is not chaotic (a start gives the same run, bit for bit), so "
+         "the study has no replicas and a law changes a feature when p < "
+      << support::significant(kSignificance, 2) << " and W1 exceeds the feature's resolution.\n\n";
+  const auto comparisons = compare_features(rows, laws, model);
   std::map<std::string, std::map<std::string, Verdict>> verdicts;
-  for (const auto& f : compared_features()) {
+  for (const auto& f : compared_features(model)) {
     s << "### " << f.label << " (`" << f.name << "`" << (f.unit.empty() ? "" : ", " + f.unit) << "; resolution "
       << support::significant(f.resolution, 2) << ")\n\n"
       << "| law | normal | with value | 5 % | 25 % | median | 75 % | 95 % | W1 | D | p | floor W1 | floor D | floor p | "
@@ -175,14 +192,14 @@ void features_section(std::ostringstream& s, const std::vector<std::string>& law
     s << "\n|---|";
     for (std::size_t i = 1; i < laws.size(); ++i) s << "---|";
     s << "\n";
-    for (const auto& c : compare_classes(rows, laws))
+    for (const auto& c : compare_classes(rows, laws, model))
       if (c.law != laws.front()) verdicts["final_class"][c.law] = c.verdict;
     for (const auto& name : {std::string("final_class")}) {
       s << "| outcome class |";
       for (std::size_t i = 1; i < laws.size(); ++i) s << " " << verdict_text(verdicts[name][laws[i]]) << " |";
       s << "\n";
     }
-    for (const auto& f : compared_features()) {
+    for (const auto& f : compared_features(model)) {
       s << "| " << f.name << " |";
       for (std::size_t i = 1; i < laws.size(); ++i) s << " " << verdict_text(verdicts[f.name][laws[i]]) << " |";
       s << "\n";
@@ -263,7 +280,7 @@ void cost_section(std::ostringstream& s, const std::vector<std::string>& laws, c
 
 }  // namespace
 
-std::vector<RunRecord> read_runs(const std::filesystem::path& runs_csv, std::size_t key_count) {
+std::vector<RunRecord> read_runs(const std::filesystem::path& runs_csv, std::size_t key_count, RunModel model) {
   std::ifstream in(runs_csv, std::ios::binary);
   if (!in) throw std::invalid_argument("cannot read '" + runs_csv.string() + "'");
   std::string line;
@@ -273,7 +290,7 @@ std::vector<RunRecord> read_runs(const std::filesystem::path& runs_csv, std::siz
   while (std::getline(in, line)) {
     ++number;
     try {
-      rows.push_back(parse_run_row(line, key_count));
+      rows.push_back(parse_run_row(line, key_count, model));
     } catch (const std::invalid_argument& e) {
       throw std::invalid_argument(runs_csv.string() + ":" + std::to_string(number) + ": " + e.what());
     }
@@ -299,11 +316,13 @@ std::string machine_description() {
 std::string report_markdown(const EnsemblePlan& plan, const std::vector<RunRecord>& rows, const std::string& command,
                             const std::string& machine, const std::vector<std::string>& figures) {
   const auto& laws = plan.study().laws;
+  const RunModel model = plan.model();
   std::ostringstream s;
   study_section(s, plan, rows, command, machine);
-  runs_section(s, laws, rows);
-  features_section(s, laws, rows);
-  if (laws.size() > 1) divergence_section(s, laws, rows, figures);
+  runs_section(s, laws, rows, model);
+  features_section(s, laws, rows, model);
+  // The puck's runs are compared by their features, not along the trajectory.
+  if (laws.size() > 1 && model == RunModel::body) divergence_section(s, laws, rows, figures);
   if (const auto axes = map_axes(plan.study())) map_section(s, build_outcome_map(*axes, laws, rows), figures);
   cost_section(s, laws, rows);
   return s.str();
@@ -311,14 +330,18 @@ std::string report_markdown(const EnsemblePlan& plan, const std::vector<RunRecor
 
 ReportOutcome write_report(const EnsemblePlan& plan, const std::filesystem::path& dir, const std::string& command,
                            bool draw) {
-  const auto rows = read_runs(dir / "runs.csv", plan.study().vary.size());
+  const auto rows = read_runs(dir / "runs.csv", plan.study().vary.size(), plan.model());
   std::optional<OutcomeMap> map;
   if (const auto axes = map_axes(plan.study())) map = build_outcome_map(*axes, plan.study().laws, rows);
   ReportOutcome out;
-  out.figures = write_figures(dir, plan.study().name, plan.study().laws, rows, map, draw);
+  out.figures = write_figures(dir, plan.study().name, plan.study().laws, rows, map, draw, plan.model());
   // Link the figures that exist (drawn now, or by an earlier run of gnuplot).
   std::vector<std::string> links;
-  for (const auto& entry : {"divergence", "map-final_class", "map-t_vertical", "map-final_gamma3", "map-changes"}) {
+  const bool puck = plan.model() == RunModel::puck;
+  const std::vector<std::string> entries =
+      puck ? std::vector<std::string>{"map-final_class", "map-log10_terminal_ratio", "map-path_lateral", "map-changes"}
+           : std::vector<std::string>{"divergence", "map-final_class", "map-t_vertical", "map-final_gamma3", "map-changes"};
+  for (const auto& entry : entries) {
     const std::string f = std::string("figures/") + entry + ".png";
     if (std::filesystem::exists(dir / f)) links.push_back(f);
   }

@@ -50,9 +50,11 @@ std::string manifest_text(const EnsemblePlan& plan, const std::string& command) 
 EnsembleSession::EnsembleSession(const EnsemblePlan& plan, SessionOptions options)
     : plan_(plan), options_(std::move(options)) {
   const auto& dir = options_.out;
+  if (options_.trajectories && plan.model() == RunModel::puck)
+    throw std::invalid_argument("--hdf5: a puck study keeps no trajectories (its features come from each run's summary)");
   const auto manifest = dir / "ensemble.json";
   const auto runs = dir / "runs.csv";
-  const std::string header = runs_header(keys_of(plan.study()));
+  const std::string header = runs_header(keys_of(plan.study()), plan.model());
   std::error_code ec;
   if (std::filesystem::exists(dir, ec) && !std::filesystem::is_directory(dir, ec))
     throw std::invalid_argument("--out " + dir.string() + " is not a folder");

@@ -8,6 +8,11 @@
 // "stopped" as a class of its own) compares all runs. Divergence times compare the law's runs
 // against the reference on the same replica with the floor's: the reference on replica 2p + 1
 // against 2p.
+//
+// A puck study (dynamics/ensemble/run_model.h) compares the puck's features. It has no replicas: the
+// puck's motion is not chaotic (the same start gives the same run, bit for bit), so its floor is
+// zero, and a law changes a feature when its distribution differs significantly (p < 0.01) by
+// more than the feature's resolution.
 
 #include <functional>
 #include <string>
@@ -30,9 +35,10 @@ struct FeatureDef {
   std::function<double(const RunRecord&)> value;
 };
 
-/// The features the report compares: t_vertical, plateau_tilt_deg, t_rest, final_gamma3,
-/// liftoffs, min_n_over_mg, work_slide, work_spin.
-[[nodiscard]] const std::vector<FeatureDef>& compared_features();
+/// The features the report compares: for the body t_vertical, plateau_tilt_deg, t_rest,
+/// final_gamma3, liftoffs, min_n_over_mg, work_slide, work_spin; for the puck slip_stop_time,
+/// spin_stop_time, log10 of terminal_ratio, path_along, path_lateral, turned, work_slide, work_spin.
+[[nodiscard]] const std::vector<FeatureDef>& compared_features(RunModel model = RunModel::body);
 
 /// The quantiles the report lists (5, 25, 50, 75, 95 %).
 inline constexpr double kQuantiles[] = {0.05, 0.25, 0.5, 0.75, 0.95};
@@ -64,7 +70,8 @@ struct FeatureComparison {
 
 /// Every compared feature for every law (the reference first), from the study's rows.
 [[nodiscard]] std::vector<FeatureComparison> compare_features(const std::vector<RunRecord>& rows,
-                                                              const std::vector<std::string>& laws);
+                                                              const std::vector<std::string>& laws,
+                                                              RunModel model = RunModel::body);
 
 /// The outcome classes of a law against the reference's: total variation and chi-square p.
 struct ClassComparison {
@@ -77,7 +84,8 @@ struct ClassComparison {
   Verdict verdict = Verdict::not_available;
 };
 [[nodiscard]] std::vector<ClassComparison> compare_classes(const std::vector<RunRecord>& rows,
-                                                           const std::vector<std::string>& laws);
+                                                           const std::vector<std::string>& laws,
+                                                           RunModel model = RunModel::body);
 
 /// Divergence times: each law's (against the reference on the same replica), and the floor's.
 struct DivergenceSummary {
@@ -93,6 +101,9 @@ struct DivergenceSummary {
 };
 [[nodiscard]] std::vector<DivergenceSummary> compare_divergence(const std::vector<RunRecord>& rows,
                                                                 const std::vector<std::string>& laws);
+
+/// Whether the model's motion is deterministic, without chaos: its floor is zero (the puck).
+[[nodiscard]] inline bool floor_is_zero(RunModel model) { return model == RunModel::puck; }
 
 /// Whether a run ended as the model intends (t_end, rest, rolling).
 [[nodiscard]] bool ended_normally(const RunRecord& r);

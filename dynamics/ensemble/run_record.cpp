@@ -16,6 +16,12 @@ const std::vector<std::string> kAfter = {
     "t_vertical", "vertical_pole", "plateau_tilt_deg", "t_rest",    "final_gamma3",    "liftoffs",
     "min_n_over_mg", "work_slide", "work_spin",     "t_diverge",     "diverge_ref",     "diverge_horizon",
     "message"};
+const std::vector<std::string> kAfterPuck = {
+    "reason",         "final_class",    "t_final",        "wall_time",            "steps",      "rhs_calls",
+    "slip_stop_time", "spin_stop_time", "terminal_ratio", "terminal_ratio_limit", "path_along", "path_lateral",
+    "turned",         "work_slide",     "work_spin",      "message"};
+
+const std::vector<std::string>& after_keys(RunModel model) { return model == RunModel::puck ? kAfterPuck : kAfter; }
 
 void integer_field(std::string& row, long x) { row += std::to_string(x); }
 
@@ -37,16 +43,30 @@ std::string outcome_class(std::string_view reason, double final_gamma3, const pa
   return "tilted";
 }
 
-std::vector<std::string> run_columns(const std::vector<std::string>& keys) {
+// Within a decade of 1: at the puck's stop thresholds (equal in the scales, dynamics/puck/puck_run.h)
+// the ratio is at most 1 when the slip stops first and at least 1 when the spin does; a decade
+// away, the other motion still has a decade of speed to lose.
+std::string puck_outcome_class(std::string_view reason, double terminal_ratio) {
+  if (reason == RunRecord::kFailed) return "failed";
+  if (reason == "t_end") return "moving";
+  if (reason != "rest") return "stopped";
+  if (std::isnan(terminal_ratio)) return "rest";
+  if (terminal_ratio < 0.1) return "slip-first";
+  if (terminal_ratio > 10.0) return "spin-first";
+  return "together";
+}
+
+std::vector<std::string> run_columns(const std::vector<std::string>& keys, RunModel model) {
   std::vector<std::string> c = kBefore;
   c.insert(c.end(), keys.begin(), keys.end());
-  c.insert(c.end(), kAfter.begin(), kAfter.end());
+  const auto& after = after_keys(model);
+  c.insert(c.end(), after.begin(), after.end());
   return c;
 }
 
-std::string runs_header(const std::vector<std::string>& keys) {
+std::string runs_header(const std::vector<std::string>& keys, RunModel model) {
   std::string h;
-  for (const auto& c : run_columns(keys)) {
+  for (const auto& c : run_columns(keys, model)) {
     if (!h.empty()) h.push_back(',');
     append_text_field(h, c);
   }
@@ -85,6 +105,20 @@ std::string to_csv_row(const RunRecord& r) {
   num(r.wall_time);
   integer(r.steps);
   integer(r.rhs_calls);
+  if (r.model == RunModel::puck) {
+    num(r.puck.slip_stop_time);
+    num(r.puck.spin_stop_time);
+    num(r.puck.terminal_ratio);
+    num(r.puck.terminal_ratio_limit);
+    num(r.puck.path_along);
+    num(r.puck.path_lateral);
+    num(r.puck.turned);
+    num(r.work_slide);
+    num(r.work_spin);
+    text(support::one_line(r.message));
+    row.push_back('\n');
+    return row;
+  }
   num(r.t_vertical);
   integer(r.vertical_pole);
   num(r.plateau_tilt_deg);
@@ -102,9 +136,9 @@ std::string to_csv_row(const RunRecord& r) {
   return row;
 }
 
-RunRecord parse_run_row(std::string_view line, std::size_t key_count) {
+RunRecord parse_run_row(std::string_view line, std::size_t key_count, RunModel model) {
   const std::vector<std::string> f = split_csv_line(line);
-  const std::size_t expected = kBefore.size() + key_count + kAfter.size();
+  const std::size_t expected = kBefore.size() + key_count + after_keys(model).size();
   if (f.size() != expected)
     throw std::invalid_argument("a row of runs.csv has " + std::to_string(f.size()) + " fields, not " +
                                 std::to_string(expected));
@@ -121,6 +155,20 @@ RunRecord parse_run_row(std::string_view line, std::size_t key_count) {
   r.wall_time = parse_number_field(f[i++], "wall_time");
   r.steps = parse_integer(f[i++], "steps");
   r.rhs_calls = parse_integer(f[i++], "rhs_calls");
+  r.model = model;
+  if (model == RunModel::puck) {
+    r.puck.slip_stop_time = parse_number_field(f[i++], "slip_stop_time");
+    r.puck.spin_stop_time = parse_number_field(f[i++], "spin_stop_time");
+    r.puck.terminal_ratio = parse_number_field(f[i++], "terminal_ratio");
+    r.puck.terminal_ratio_limit = parse_number_field(f[i++], "terminal_ratio_limit");
+    r.puck.path_along = parse_number_field(f[i++], "path_along");
+    r.puck.path_lateral = parse_number_field(f[i++], "path_lateral");
+    r.puck.turned = parse_number_field(f[i++], "turned");
+    r.work_slide = parse_number_field(f[i++], "work_slide");
+    r.work_spin = parse_number_field(f[i++], "work_spin");
+    r.message = f[i++];
+    return r;
+  }
   r.t_vertical = parse_number_field(f[i++], "t_vertical");
   r.vertical_pole = static_cast<int>(parse_integer(f[i++], "vertical_pole"));
   r.plateau_tilt_deg = parse_number_field(f[i++], "plateau_tilt_deg");

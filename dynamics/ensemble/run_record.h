@@ -23,19 +23,39 @@
 //                                      run on replica 2p (diverge_ref = "replica:2p": the chaos floor)
 //   message                            why a run stopped early or failed (one line)
 //
+// A puck study (dynamics/ensemble/run_model.h) has the puck's columns instead of the body's
+// features: after rhs_calls, slip_stop_time, spin_stop_time (s; empty: never), terminal_ratio
+// (U/(a|Omega|) at the first stop), terminal_ratio_limit (extrapolated; empty: none), path_along,
+// path_lateral (m: the end's offset from the start along and across the initial velocity),
+// turned (rad: the heading's change), work_slide, work_spin (J), message — the quantities of the
+// puck's summary.json (dynamics/puck/puck_summary_json.h); no divergence columns.
+//
 // Numbers: shortest round-trip text; missing: empty.
 
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "dynamics/ensemble/run_model.h"
 #include "dynamics/paper/run_features.h"
 
 namespace frictionlab::dynamics::ensemble {
 
 inline constexpr double kNaN = paper::kNaN;
 
+/// The puck's own features (dynamics/puck/puck_run.h).
+struct PuckFeatures {
+  double slip_stop_time = kNaN;        ///< s
+  double spin_stop_time = kNaN;        ///< s
+  double terminal_ratio = kNaN;        ///< U/(a|Omega|) at the first of the two stops
+  double terminal_ratio_limit = kNaN;  ///< extrapolated from the energy decades (aitken_limit)
+  double path_along = kNaN;            ///< m, along the initial velocity
+  double path_lateral = kNaN;          ///< m, to its left
+  double turned = kNaN;                ///< rad, the heading's change
+};
+
 struct RunRecord {
+  RunModel model = RunModel::body;  ///< which columns the row has
   long run = 0;
   long start = 0;
   long replica = 0;
@@ -60,6 +80,7 @@ struct RunRecord {
   std::string diverge_ref;
   double diverge_horizon = kNaN;
   std::string message;
+  PuckFeatures puck;  ///< a puck run's (model == puck); work_slide, work_spin above
 
   /// The run could not run at all (reason "failed").
   [[nodiscard]] bool failed() const { return reason == kFailed; }
@@ -75,15 +96,24 @@ struct RunRecord {
 [[nodiscard]] std::string outcome_class(std::string_view reason, double final_gamma3,
                                         const paper::FeatureThresholds& th = {});
 
-/// The columns of runs.csv for the study's varied `keys`.
-[[nodiscard]] std::vector<std::string> run_columns(const std::vector<std::string>& keys);
+/// Where a puck run ended: "failed", "stopped" (before the model's end), "moving" (t_end reached),
+/// or, at rest, by the ratio U/(a|Omega|) at the first of the two stops: "together" within a decade
+/// of 1 (the other motion was then about as slow: both die out together), "slip-first" below 0.1,
+/// "spin-first" above 10 (a ratio still far from 1 when one motion stops: the regimes r -> 0 and
+/// r -> infinity of docs/puck.md §3). A run at rest without a ratio (it never both slid and spun) is
+/// "rest".
+[[nodiscard]] std::string puck_outcome_class(std::string_view reason, double terminal_ratio);
+
+/// The columns of runs.csv for the study's varied `keys` and model.
+[[nodiscard]] std::vector<std::string> run_columns(const std::vector<std::string>& keys,
+                                                   RunModel model = RunModel::body);
 /// The header line (with its line ending).
-[[nodiscard]] std::string runs_header(const std::vector<std::string>& keys);
-/// One row (with its line ending).
+[[nodiscard]] std::string runs_header(const std::vector<std::string>& keys, RunModel model = RunModel::body);
+/// One row (with its line ending), with the columns of r.model.
 [[nodiscard]] std::string to_csv_row(const RunRecord& r);
 /// A row read back (without its line ending); a wrong number of fields or a bad number is
 /// std::invalid_argument.
-[[nodiscard]] RunRecord parse_run_row(std::string_view line, std::size_t key_count);
+[[nodiscard]] RunRecord parse_run_row(std::string_view line, std::size_t key_count, RunModel model = RunModel::body);
 /// The run index of a row (its first field), without parsing the rest; -1 if it has none.
 [[nodiscard]] long run_index_of_row(std::string_view line);
 

@@ -8,6 +8,8 @@
 #include "dynamics/equations_of_motion.h"
 #include "dynamics/paper/experiment_report.h"
 #include "dynamics/paper/trajectory_compare.h"
+#include "dynamics/puck/puck_run.h"
+#include "dynamics/puck/puck_summary_json.h"
 #include "dynamics/simulation.h"
 #include "friction/registry.h"
 #include "friction/support/errors.h"
@@ -32,15 +34,62 @@ struct RunOutput {
   bool interrupted = false;
 };
 
+// A run of the puck model: its summary's features (the quantities of its summary.json,
+// dynamics/puck/puck_summary_json.h). No samples are kept: the puck's features come from the
+// summary, and a puck study has no divergence times (its runs are compared by their features).
+void run_puck(const EnsemblePlan& plan, const RunId& id, const ExecuteOptions& options, RunOutput& out) {
+  RunRecord& r = out.finished.record;
+  const puck::PuckScenario s = plan.puck_scenario(id);
+  const auto law = friction::make_law(s.law);
+  const puck::PuckOnPlane sys(s.puck, s.k, s.g, *law);
+  RunOptions run = s.run;
+  run.cancel = options.cancel;
+  const puck::PuckRunSummary sum = puck::simulate_puck(sys, puck::initial_state(s), run);
+  if (sum.reason == Termination::interrupted) {
+    out.interrupted = true;
+    return;
+  }
+  const puck::PuckState& x = sum.x_final;
+  const puck::PathOffset off = puck::path_offset(s.initial.position, s.initial.v, puck::position(x));
+  r.reason = std::string(to_string(sum.reason));
+  r.t_final = sum.t_final;
+  r.steps = sum.steps;
+  r.rhs_calls = sum.rhs_calls + sum.sample_rhs_calls;
+  r.puck.slip_stop_time = sum.slip_stop_time;
+  r.puck.spin_stop_time = sum.spin_stop_time;
+  r.puck.terminal_ratio = sum.terminal_ratio;
+  r.puck.terminal_ratio_limit = sum.terminal_ratio_limit;
+  r.puck.path_along = off.along;
+  r.puck.path_lateral = off.lateral;
+  r.puck.turned = puck::heading(x) - s.initial.heading;
+  r.work_slide = puck::slide_work(x);
+  r.work_spin = puck::spin_work(x);
+  r.final_class = puck_outcome_class(r.reason, r.puck.terminal_ratio);
+  if (sum.reason != Termination::t_end && sum.reason != Termination::rest) r.message = sum.message;
+}
+
 RunOutput run_one(const EnsemblePlan& plan, const RunId& id, const ExecuteOptions& options) {
   const auto wall_start = std::chrono::steady_clock::now();
   RunOutput out;
   RunRecord& r = out.finished.record;
+  r.model = plan.model();
   r.run = plan.run_index(id);
   r.start = id.start;
   r.replica = id.replica;
   r.law = plan.study().laws.at(static_cast<std::size_t>(id.law));
   r.values = plan.start_values(id.start);
+  if (plan.model() == RunModel::puck) {
+    try {
+      run_puck(plan, id, options, out);
+      if (out.interrupted) return out;
+    } catch (const std::exception& e) {
+      r.reason = std::string(RunRecord::kFailed);
+      r.final_class = puck_outcome_class(r.reason, kNaN);
+      r.message = support::one_line(e.what());
+    }
+    r.wall_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+    return out;
+  }
   try {
     const Scenario s = plan.scenario(id);
     const auto law = friction::make_law(s.law);

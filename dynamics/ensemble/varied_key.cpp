@@ -20,9 +20,10 @@ std::string vector_text(const Eigen::Vector3d& v) {
 
 }  // namespace
 
-VariedKey VariedKey::parse(const std::string& key, const std::string& where) {
+VariedKey VariedKey::parse(const std::string& key, const std::string& where, bool puck) {
   VariedKey k;
   k.name_ = key;
+  if (puck && key == "initial.omega") return k;  // the puck's spin: a scalar
   if (key == "initial.gamma3") {
     k.kind_ = Kind::gamma3;
     return k;
@@ -84,6 +85,38 @@ std::vector<std::string> start_overrides(const StartState& state) {
   if (state.gamma_set) out.push_back("initial.gamma=" + vector_text(state.initial.gamma));
   if (state.omega_set) out.push_back("initial.omega=" + vector_text(state.initial.omega));
   if (state.velocity_set) out.push_back("initial.v=" + vector_text(state.initial.v));
+  return out;
+}
+
+std::vector<std::string> puck_start_overrides(const Eigen::Vector2d& base_v, const std::vector<VariedKey>& keys,
+                                              const std::vector<double>& values) {
+  std::vector<std::string> out;
+  Eigen::Vector2d v = base_v;
+  bool v_set = false;
+  for (std::size_t i = 0; i < keys.size(); ++i) {
+    const VariedKey& k = keys[i];
+    const double x = values.at(i);
+    if (!std::isfinite(x)) throw support::invalid_value(k.name(), x, "it must be finite");
+    if (k.kind() == VariedKey::Kind::plain) {
+      std::string o = k.name() + "=";
+      support::append_shortest(o, x);
+      out.push_back(std::move(o));
+    } else if (k.kind() == VariedKey::Kind::velocity && k.component() < 2) {
+      v[k.component()] = x;
+      v_set = true;
+    } else {
+      throw support::invalid_value(k.name(), x,
+                                   "it is a key of the body model; a puck varies initial.v1, initial.v2 "
+                                   "(its velocity [vx, vy]) and scalar keys such as initial.omega");
+    }
+  }
+  if (v_set) {
+    std::string o = "initial.v=[";
+    support::append_shortest(o, v[0]);
+    o += ", ";
+    support::append_shortest(o, v[1]);
+    out.push_back(o + "]");
+  }
   return out;
 }
 

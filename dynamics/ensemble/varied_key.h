@@ -25,8 +25,9 @@ class VariedKey {
   enum class Kind { plain, gamma3, omega, velocity };
 
   /// The key as a study writes it. A vector key of the scenario (initial.gamma, initial.omega,
-  /// initial.v) is std::invalid_argument naming `where` and the scalar keys that vary it.
-  static VariedKey parse(const std::string& key, const std::string& where);
+  /// initial.v) is std::invalid_argument naming `where` and the scalar keys that vary it. For the
+  /// puck (`puck`), initial.omega is its spin, a plain scalar key.
+  static VariedKey parse(const std::string& key, const std::string& where, bool puck = false);
 
   [[nodiscard]] const std::string& name() const { return name_; }
   [[nodiscard]] Kind kind() const { return kind_; }
@@ -56,5 +57,14 @@ struct StartState {
 /// The overrides that make `state` part of a scenario: its plain overrides, then the vectors it
 /// changed, written whole with round-trip numbers ("initial.gamma=[x, y, z]").
 [[nodiscard]] std::vector<std::string> start_overrides(const StartState& state);
+
+/// The overrides of a start of a puck scenario (`model = "puck"`, dynamics/puck/puck_scenario.h):
+/// plain keys as key=value (the spin is the scalar initial.omega, the patch puck.b, ...); initial.v1
+/// and initial.v2 set one component of the puck's velocity [vx, vy] (the other as in `base_v`),
+/// written whole as initial.v=[vx, vy]. The body's derived keys (initial.gamma3, initial.omega1..3,
+/// initial.v3) are std::invalid_argument naming the key: the puck has no tilt and one spin.
+[[nodiscard]] std::vector<std::string> puck_start_overrides(const Eigen::Vector2d& base_v,
+                                                            const std::vector<VariedKey>& keys,
+                                                            const std::vector<double>& values);
 
 }  // namespace frictionlab::dynamics::ensemble

@@ -155,5 +155,24 @@ TEST(EnsemblePlan, BadKeysLawsAndScenariosAreOneLineNamingThem) {
   }
 }
 
+// Every shipped study plans (its keys exist in its scenario at both ends of their ranges), and the
+// puck's and the tippe top's are planned with their model.
+TEST(EnsemblePlan, ShippedStudiesPlanWithTheirModel) {
+  for (const auto& entry : std::filesystem::directory_iterator(kStudies)) {
+    if (entry.path().extension() != ".toml") continue;
+    const EnsemblePlan p = EnsemblePlan::make(read_study(entry.path()));
+    const std::string stem = entry.path().stem().string();
+    EXPECT_EQ(p.model(), stem.rfind("puck", 0) == 0 ? RunModel::puck : RunModel::body) << stem;
+  }
+  const EnsemblePlan puck = EnsemblePlan::make(read_study(kStudies / "puck-map.toml"));
+  EXPECT_EQ(puck.runs(), 32 * 10 * 6);
+  // Start 0: the first key (initial.v1) and the second (puck.b) at their minimum.
+  const puck::PuckScenario s = puck.puck_scenario({0, 0, 1});
+  EXPECT_DOUBLE_EQ(s.initial.v.x(), 0.05);
+  EXPECT_DOUBLE_EQ(s.puck.b, 0.005);
+  EXPECT_DOUBLE_EQ(s.puck.inertia, 7.5e-5) << "kappa = 0.3 fixed by the study's set";
+  EXPECT_EQ(s.law, "pade-reconstructed");
+}
+
 }  // namespace
 }  // namespace frictionlab::dynamics::ensemble

@@ -91,5 +91,50 @@ TEST(EnsembleRunRecord, OutcomeClassesFollowTheEndAndTheFinalTilt) {
   EXPECT_EQ(outcome_class("failed", std::nan("")), "failed");
 }
 
+TEST(EnsembleRunRecord, APuckRowHasThePuckColumnsAndReadsBack) {
+  RunRecord r;
+  r.model = RunModel::puck;
+  r.run = 5;
+  r.law = "exact";
+  r.values = {0.25};
+  r.reason = "rest";
+  r.final_class = "together";
+  r.t_final = 0.52;
+  r.wall_time = 0.001;
+  r.steps = 90;
+  r.rhs_calls = 1200;
+  r.puck.slip_stop_time = 0.5211;
+  r.puck.spin_stop_time = 0.5216;
+  r.puck.terminal_ratio = 0.8165;
+  r.puck.path_along = 0.232;
+  r.puck.path_lateral = -0.001;
+  r.puck.turned = 8.59;
+  r.work_slide = 0.05;
+  r.work_spin = 0.015;
+  const std::string row = to_csv_row(r);
+  // run, start, replica, law, one key, then the puck's 16 columns.
+  EXPECT_EQ(split_csv_line(row.substr(0, row.size() - 1)).size(), 4u + 1u + 16u);
+  EXPECT_EQ(run_columns({"k"}, RunModel::puck).size(), 4u + 1u + 16u);
+  const RunRecord b = parse_run_row(std::string_view(row).substr(0, row.size() - 1), 1, RunModel::puck);
+  EXPECT_EQ(b.model, RunModel::puck);
+  EXPECT_EQ(to_csv_row(b), row);
+  EXPECT_TRUE(std::isnan(b.puck.terminal_ratio_limit)) << "empty reads back as missing";
+  EXPECT_THROW((void)parse_run_row(std::string_view(row).substr(0, row.size() - 1), 1), std::invalid_argument)
+      << "a puck row is not a body row";
+  EXPECT_EQ(runs_header({"k"}, RunModel::puck).find("t_vertical"), std::string::npos);
+}
+
+TEST(EnsembleRunRecord, PuckOutcomeClassesFollowTheRatioAtTheFirstStop) {
+  EXPECT_EQ(puck_outcome_class("rest", 0.8165), "together");
+  EXPECT_EQ(puck_outcome_class("rest", 0.1), "together") << "a decade below 1 is still together";
+  EXPECT_EQ(puck_outcome_class("rest", 0.0999), "slip-first");
+  EXPECT_EQ(puck_outcome_class("rest", 10.0), "together");
+  EXPECT_EQ(puck_outcome_class("rest", 10.01), "spin-first");
+  EXPECT_EQ(puck_outcome_class("rest", std::nan("")), "rest");
+  EXPECT_EQ(puck_outcome_class("t_end", 1.0), "moving");
+  EXPECT_EQ(puck_outcome_class("law-pole", 1.0), "stopped");
+  EXPECT_EQ(puck_outcome_class("failed", std::nan("")), "failed");
+}
+
 }  // namespace
 }  // namespace frictionlab::dynamics::ensemble

@@ -105,5 +105,20 @@ TEST(EnsembleReplica, PerturbationHasTheGivenSizeAndIsSeeded) {
   EXPECT_LE(dw, std::sqrt(3.0) * size * 5.0);
 }
 
+TEST(EnsembleVariedKey, APuckStartSetsItsVelocityAndPassesPlainKeysOn) {
+  const std::vector<VariedKey> keys = {VariedKey::parse("initial.v2", "k"), VariedKey::parse("puck.b", "k"),
+                                       VariedKey::parse("initial.v1", "k")};
+  const auto o = puck_start_overrides(Eigen::Vector2d(1.0, 0.5), keys, {0.25, 0.02, 3.0});
+  EXPECT_EQ(o, (std::vector<std::string>{"puck.b=0.02", "initial.v=[3, 0.25]"}));
+  EXPECT_THROW((void)VariedKey::parse("initial.omega", "k"), std::invalid_argument) << "the body's is a vector";
+  EXPECT_EQ(puck_start_overrides(Eigen::Vector2d(1.0, 0.5), {VariedKey::parse("initial.omega", "k", true)}, {7.0}),
+            (std::vector<std::string>{"initial.omega=7"}))
+      << "the puck's spin is a plain scalar key";
+  for (const char* body_key : {"initial.gamma3", "initial.omega3", "initial.v3"})
+    EXPECT_THROW((void)puck_start_overrides(Eigen::Vector2d::Zero(), {VariedKey::parse(body_key, "k")}, {0.5}),
+                 std::invalid_argument)
+        << body_key;
+}
+
 }  // namespace
 }  // namespace frictionlab::dynamics::ensemble
