@@ -11,6 +11,7 @@
 #include "dynamics/ensemble/design.h"
 #include "dynamics/ensemble/random_stream.h"
 #include "dynamics/ensemble/replica.h"
+#include "dynamics/ensemble/variant.h"
 #include "friction/registry.h"
 #include "friction/support/errors.h"
 
@@ -67,10 +68,18 @@ EnsemblePlan EnsemblePlan::make(const Study& study) {
   p.study_ = std::make_shared<const Study>(study);
   const std::string where = study.file.string() + ": ";
   try {
-    for (std::size_t i = 0; i < study.set.size(); ++i)
-      if (study.set[i].substr(0, study.set[i].find('=')) == "contact.law")
+    bool patch_variants = false;
+    for (std::size_t i = 0; i < study.laws.size(); ++i)
+      patch_variants = patch_variants || !parse_variant(study.laws[i], "laws[" + std::to_string(i) + "]").patch.empty();
+    for (std::size_t i = 0; i < study.set.size(); ++i) {
+      const std::string key = study.set[i].substr(0, study.set[i].find('='));
+      if (key == "contact.law")
         throw support::invalid_value("set[" + std::to_string(i) + "]", std::string_view(study.set[i]),
                                      "the laws are the study's `laws`");
+      if (key == "contact.patch" && patch_variants)
+        throw support::invalid_value("set[" + std::to_string(i) + "]", std::string_view(study.set[i]),
+                                     "the contact models are the laws' @PATCH suffixes");
+    }
     const std::string text = read_text(study.scenario);
     try {
       p.document_ = std::make_shared<const ScenarioDocument>(ScenarioDocument::parse(text, study.scenario.string()));
@@ -93,8 +102,14 @@ EnsemblePlan EnsemblePlan::make(const Study& study) {
     }
 
     for (std::size_t i = 0; i < study.laws.size(); ++i) {
+      const Variant v = parse_variant(study.laws[i], "laws[" + std::to_string(i) + "]");
       try {
-        (void)friction::make_law(study.laws[i]);
+        (void)friction::make_law(v.law);
+        if (!v.patch.empty()) {  // the contact model and the keys it needs, on the base start
+          std::vector<std::string> o = study.set;
+          for (auto& e : variant_overrides(v)) o.push_back(std::move(e));
+          (void)p.document_->resolve(o);
+        }
       } catch (const std::invalid_argument& e) {
         throw support::invalid_value("laws[" + std::to_string(i) + "]", std::string_view(study.laws[i]), e.what());
       }
@@ -153,7 +168,8 @@ std::vector<std::string> EnsemblePlan::overrides(const RunId& id) const {
   s = perturb_replica(std::move(s), study_->replica_size, rate_scale_, study_->seed, id.start, id.replica);
   std::vector<std::string> o = study_->set;
   for (auto& e : start_overrides(s)) o.push_back(std::move(e));
-  o.push_back("contact.law=" + study_->laws.at(static_cast<std::size_t>(id.law)));
+  for (auto& e : variant_overrides(parse_variant(study_->laws.at(static_cast<std::size_t>(id.law)), "law")))
+    o.push_back(std::move(e));
   return o;
 }
 

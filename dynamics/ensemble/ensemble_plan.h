@@ -2,7 +2,8 @@
 // Every run of a study: (start x replica x law), numbered, with its scenario, and grouped into
 // tasks. The base scenario is read once; each run's scenario is the base resolved with, in order,
 // the study's `set`, the start's varied keys (dynamics/ensemble/varied_key.h), the replica's
-// perturbed initial vectors (dynamics/ensemble/replica.h) and contact.law = the law.
+// perturbed initial vectors (dynamics/ensemble/replica.h) and contact.law = the law (with its
+// contact model, contact.patch, for a variant `LAW@PATCH`: dynamics/ensemble/variant.h).
 //
 // Run index  i = (start * replicas + replica) * laws + law. It identifies a run within a study;
 // the study's hash identifies the study, so that `--resume` refuses a folder made by another one:

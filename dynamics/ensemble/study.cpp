@@ -12,6 +12,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "dynamics/ensemble/variant.h"
 #include "friction/support/errors.h"
 #include "friction/support/number_format.h"
 
@@ -189,7 +190,7 @@ Study build(const toml::table& root, const std::filesystem::path& source, const 
   if (!top.has("laws")) throw InvalidValue("laws", "laws is required: the friction laws to compare, the reference first");
   if (s.laws.empty()) throw InvalidValue("laws", "laws must list at least one friction law");
   for (std::size_t i = 0; i < s.laws.size(); ++i) {
-    if (s.laws[i].empty()) throw invalid_value("laws[" + std::to_string(i) + "]", std::string_view(s.laws[i]), "it must name a law");
+    (void)parse_variant(s.laws[i], "laws[" + std::to_string(i) + "]");  // LAW or LAW@PATCH, both parts named
     for (std::size_t j = 0; j < i; ++j)
       if (s.laws[i] == s.laws[j])
         throw invalid_value("laws[" + std::to_string(i) + "]", std::string_view(s.laws[i]), "it repeats laws[" + std::to_string(j) + "]");

@@ -6,7 +6,8 @@
 //
 //   name = "egg-map"                              # default: the file's stem
 //   scenario = "../scenarios/egg-printed-a.toml"  # relative to the study file
-//   laws = ["exact", "pade-reconstructed"]        # the first is the reference
+//   laws = ["exact", "pade-reconstructed"]        # the first is the reference; LAW@PATCH runs the
+//                                                 # law under contact.patch = PATCH (variant.h)
 //   set = ["run.output_dt=0.01"]                  # overrides of every run (the --set syntax)
 //   seed = 1
 //   [design]
@@ -61,7 +62,7 @@ struct Study {
   std::string description;
   std::filesystem::path file;        ///< the study file as given
   std::filesystem::path scenario;    ///< the base scenario (resolved against the study's folder)
-  std::vector<std::string> laws;     ///< as given to the friction registry; laws[0] is the reference
+  std::vector<std::string> laws;     ///< LAW or LAW@PATCH (variant.h); laws[0] is the reference
   std::vector<std::string> set;      ///< "key=value" overrides of every run
   std::uint64_t seed = 1;
   DesignKind design = DesignKind::grid;
