@@ -22,8 +22,7 @@ std::string summary_of(const std::optional<double>& r_spin) {
 
 }  // namespace
 
-DecoupledLaw::DecoupledLaw(std::optional<double> r_spin, std::string name)
-    : r_spin_(r_spin), name_(std::move(name)), summary_(summary_of(r_spin)) {
+DecoupledLaw::DecoupledLaw(std::optional<double> r_spin) : r_spin_(r_spin), summary_(summary_of(r_spin)) {
   if (r_spin && !(std::isfinite(*r_spin) && *r_spin >= 0.0)) {
     throw support::invalid_value("r_spin", *r_spin, "the torsional length must be a finite number >= 0 m");
   }

@@ -14,7 +14,7 @@
 //
 // with E the complete elliptic integral of the second kind (boost::math::ellint_2, modulus e;
 // circle: (3 pi/16) kN a, docs/model.md). The default is the law known before as
-// `coulomb-decoupled` (the name still denotes it); `decoupled:r_spin=0` has no spin friction at all.
+// `coulomb-decoupled` (an alias of `decoupled` in the registry); `decoupled:r_spin=0` has no spin friction at all.
 //
 // Provenance: the classical decoupled model of sliding plus pivoting friction (e.g. Contensou's
 // "pivoting" torque with the Hertz pressure). What each engine's parameter means and how it maps
@@ -47,15 +47,14 @@ namespace frictionlab::friction {
 class DecoupledLaw final : public FrictionLaw {
  public:
   /// r_spin: the torsional length in metres (finite, >= 0), or none for the exact pure-spin torque
-  /// of the Hertz patch. std::invalid_argument naming r_spin otherwise. `name`: the registry name
-  /// the law answers to ("decoupled"; "coulomb-decoupled" for the default under its old name).
-  explicit DecoupledLaw(std::optional<double> r_spin = std::nullopt, std::string name = "decoupled");
+  /// of the Hertz patch. std::invalid_argument naming r_spin otherwise.
+  explicit DecoupledLaw(std::optional<double> r_spin = std::nullopt);
 
   /// What `decoupled:r_spin=...` may set (friction/law_spec.h): r_spin, m, >= 0; none: the exact
   /// Hertz pure-spin torque.
   [[nodiscard]] static std::vector<LawParameter> parameters();
 
-  [[nodiscard]] std::string_view name() const override { return name_; }
+  [[nodiscard]] std::string_view name() const override { return "decoupled"; }
   [[nodiscard]] std::string_view summary() const override { return summary_; }
   [[nodiscard]] LawPromises promises() const override;
   /// The torsional length, m, or none (Hertz pure-spin torque).
@@ -65,7 +64,6 @@ class DecoupledLaw final : public FrictionLaw {
   [[nodiscard]] FrictionForces do_evaluate(const ContactInput& in) const override;
 
   std::optional<double> r_spin_;
-  std::string name_;
   std::string summary_;
 };
 

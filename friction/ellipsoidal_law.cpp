@@ -41,8 +41,7 @@ FrictionForces ellipsoidal_max_dissipation(double F0, double M0, double r, doubl
   return out;
 }
 
-EllipsoidalLaw::EllipsoidalLaw(std::optional<double> Rb, std::string name)
-    : Rb_(Rb), name_(std::move(name)), summary_(summary_of(Rb)) {
+EllipsoidalLaw::EllipsoidalLaw(std::optional<double> Rb) : Rb_(Rb), summary_(summary_of(Rb)) {
   if (Rb && !(std::isfinite(*Rb) && *Rb > 0.0)) {
     throw support::invalid_value("Rb", *Rb, "the radius of the ellipsoidal law must be a finite number > 0 m");
   }

@@ -30,7 +30,7 @@
 // torque exact for a circular Hertz patch, (3 pi/16) kN a (docs/model.md). For an ellipse there is
 // no single right radius: the circle value on the geometric-mean radius sqrt(a b) (the circle of
 // the same area) is a choice of ours, not of the cited papers. This default is the law known before
-// as `moller-ellipsoidal` (the name still denotes it). Which fixed Rb best matches the exact law
+// as `moller-ellipsoidal` (an alias of `ellipsoidal` in the registry). Which fixed Rb best matches the exact law
 // for each pressure: docs/engines.md (`frictionlab calibrate`).
 //
 // Limits: U = Omega = 0 (0/0): all zero, as the exact law at rest. Omega = 0: F1 = kN exactly.
@@ -63,15 +63,13 @@ namespace frictionlab::friction {
 class EllipsoidalLaw final : public FrictionLaw {
  public:
   /// Rb: the radius in metres (finite, > 0), or none for the Hertz-calibrated
-  /// Rb = (3 pi/16) sqrt(a b). std::invalid_argument naming Rb otherwise. `name`: the registry
-  /// name the law answers to ("ellipsoidal"; "moller-ellipsoidal" for the default under its old
-  /// name).
-  explicit EllipsoidalLaw(std::optional<double> Rb = std::nullopt, std::string name = "ellipsoidal");
+  /// Rb = (3 pi/16) sqrt(a b). std::invalid_argument naming Rb otherwise.
+  explicit EllipsoidalLaw(std::optional<double> Rb = std::nullopt);
 
   /// What `ellipsoidal:Rb=...` may set (friction/law_spec.h): Rb, m, > 0; none: Hertz-calibrated.
   [[nodiscard]] static std::vector<LawParameter> parameters();
 
-  [[nodiscard]] std::string_view name() const override { return name_; }
+  [[nodiscard]] std::string_view name() const override { return "ellipsoidal"; }
   [[nodiscard]] std::string_view summary() const override { return summary_; }
   [[nodiscard]] LawPromises promises() const override;
   /// The fixed radius, m, or none (Hertz-calibrated).
@@ -81,7 +79,6 @@ class EllipsoidalLaw final : public FrictionLaw {
   [[nodiscard]] FrictionForces do_evaluate(const ContactInput& in) const override;
 
   std::optional<double> Rb_;
-  std::string name_;
   std::string summary_;
 };
 

@@ -29,6 +29,14 @@ struct Entry {
   bool built_in = false;
 };
 
+// An alias as the registry keeps it: its name, the spec it stands for (parsed; its name is a
+// registered law's).
+struct Alias {
+  std::string name;
+  ParsedLawSpec target;
+  bool built_in = false;
+};
+
 // Makes the law `args` describes with `e`'s factory, checked to be the law registered.
 std::unique_ptr<FrictionLaw> make_with(const Entry& e, const LawArguments& args) {
   std::unique_ptr<FrictionLaw> law = e.factory(args);
@@ -78,19 +86,53 @@ class Registry {
     add(built_in([](const LawArguments& a) { return std::make_unique<DecoupledLaw>(a.number("r_spin")); },
                  DecoupledLaw::parameters()));
     // Their Hertz-calibrated defaults under the names older scenarios, runs and docs use.
-    add(built_in([](const LawArguments&) { return std::make_unique<EllipsoidalLaw>(std::nullopt, "moller-ellipsoidal"); }));
-    add(built_in([](const LawArguments&) { return std::make_unique<DecoupledLaw>(std::nullopt, "coulomb-decoupled"); }));
+    add_alias(make_alias("moller-ellipsoidal", "ellipsoidal", /*built_in=*/true));
+    add_alias(make_alias("coulomb-decoupled", "decoupled", /*built_in=*/true));
   }
 
-  // Throws std::invalid_argument if the name is taken.
+  // The alias `name` of `spec`, checked (not yet added): std::invalid_argument naming the alias if
+  // its name breaks the grammar, or if `spec` is not a spec of a registered law that its factory
+  // accepts.
+  Alias make_alias(std::string name, std::string_view spec, bool built_in) const {
+    try {
+      check_law_declaration(name, {});
+    } catch (const std::invalid_argument& e) {
+      throw std::invalid_argument("friction law alias '" + name + "' is not a valid name: " + e.what());
+    }
+    try {
+      ParsedLawSpec target = parse_law_spec(spec);
+      const auto [entry, via] = find(target.name);
+      if (via) {
+        throw std::invalid_argument("'" + target.name + "' is an alias: give the spec it stands for, " +
+                                    via->target.text);
+      }
+      (void)make_with(*entry, bind_law_spec(target, entry->parameters));  // the factory accepts it
+      return {std::move(name), std::move(target), built_in};
+    } catch (const std::invalid_argument& e) {
+      throw std::invalid_argument("friction law alias '" + name + "' cannot stand for '" + std::string(spec) +
+                                  "': " + e.what());
+    }
+  }
+
+  // std::invalid_argument if the name is taken (by a law or an alias).
   void add(Entry e) {
     const std::unique_lock lock(mutex_);
-    if (find_locked(e.name)) {
-      throw std::invalid_argument("friction law '" + e.name + "' is already registered: choose another name");
-    }
+    check_free_locked(e.name);
     entries_.push_back(std::make_shared<const Entry>(std::move(e)));
   }
 
+  // std::invalid_argument if the name is taken or the target law is gone.
+  void add_alias(Alias a) {
+    const std::unique_lock lock(mutex_);
+    check_free_locked(a.name);
+    if (!find_locked(a.target.name)) {
+      throw std::invalid_argument("friction law alias '" + a.name + "': its law '" + a.target.name +
+                                  "' was unregistered meanwhile");
+    }
+    aliases_.push_back(std::make_shared<const Alias>(std::move(a)));
+  }
+
+  // Removes a user law and its aliases.
   bool remove(std::string_view name) {
     const std::unique_lock lock(mutex_);
     const auto it = std::find_if(entries_.begin(), entries_.end(), [&](const auto& e) { return e->name == name; });
@@ -100,6 +142,19 @@ class Registry {
                                   "register_law() can be unregistered");
     }
     entries_.erase(it);
+    std::erase_if(aliases_, [&](const auto& a) { return a->target.name == name; });
+    return true;
+  }
+
+  bool remove_alias(std::string_view name) {
+    const std::unique_lock lock(mutex_);
+    const auto it = std::find_if(aliases_.begin(), aliases_.end(), [&](const auto& a) { return a->name == name; });
+    if (it == aliases_.end()) return false;
+    if ((*it)->built_in) {
+      throw std::invalid_argument("friction law alias '" + std::string(name) + "' is built-in: only aliases "
+                                  "added by register_law_alias() can be unregistered");
+    }
+    aliases_.erase(it);
     return true;
   }
 
@@ -109,12 +164,24 @@ class Registry {
     return entries_;
   }
 
-  std::shared_ptr<const Entry> find(std::string_view name) const {
+  std::vector<std::shared_ptr<const Alias>> all_aliases() const {
     const std::shared_lock lock(mutex_);
-    if (auto e = find_locked(name)) return e;
+    return aliases_;
+  }
+
+  // The law called `name`, or the alias called `name` (null if it is a law's name) and its law.
+  std::pair<std::shared_ptr<const Entry>, std::shared_ptr<const Alias>> find(std::string_view name) const {
+    const std::shared_lock lock(mutex_);
+    if (auto e = find_locked(name)) return {e, nullptr};
+    if (auto a = find_alias_locked(name)) {
+      if (auto e = find_locked(a->target.name)) return {e, a};
+    }
     std::string known;
     for (const auto& e : entries_) known += (known.empty() ? "" : ", ") + e->name;
-    throw std::invalid_argument("unknown friction law '" + std::string(name) + "'; known laws: " + known);
+    std::string aliases;
+    for (const auto& a : aliases_) aliases += (aliases.empty() ? "" : ", ") + a->name + " (" + a->target.text + ")";
+    throw std::invalid_argument("unknown friction law '" + std::string(name) + "'; known laws: " + known +
+                                (aliases.empty() ? "" : "; aliases: " + aliases));
   }
 
  private:
@@ -125,8 +192,25 @@ class Registry {
     return nullptr;
   }
 
+  std::shared_ptr<const Alias> find_alias_locked(std::string_view name) const {
+    for (const auto& a : aliases_) {
+      if (a->name == name) return a;
+    }
+    return nullptr;
+  }
+
+  [[noreturn]] static void throw_taken(const std::string& name, const std::string& by) {
+    throw std::invalid_argument("friction law '" + name + "' is already registered (" + by + "): choose another name");
+  }
+
+  void check_free_locked(const std::string& name) const {
+    if (find_locked(name)) throw_taken(name, "as a law");
+    if (const auto a = find_alias_locked(name)) throw_taken(name, "as an alias of '" + a->target.text + "'");
+  }
+
   mutable std::shared_mutex mutex_;
   std::vector<std::shared_ptr<const Entry>> entries_;
+  std::vector<std::shared_ptr<const Alias>> aliases_;
 };
 
 Registry& registry() {
@@ -139,9 +223,28 @@ struct Resolved {
   LawArguments args;
 };
 
+// ALIAS[:KEY=VALUE...] as the spec the alias stands for, with the given KEY=VALUE pairs after its
+// own; the text stays the spec as given (echoed verbatim).
+ParsedLawSpec expand_alias(const ParsedLawSpec& given, const Alias& alias) {
+  ParsedLawSpec out = alias.target;
+  out.text = given.text;
+  for (const auto& kv : given.arguments) {
+    const bool set = std::any_of(alias.target.arguments.begin(), alias.target.arguments.end(),
+                                 [&](const auto& t) { return t.first == kv.first; });
+    if (set) {
+      throw std::invalid_argument("friction law spec '" + given.text + "': " + kv.first + " is set by the alias '" +
+                                  alias.name + "', which stands for '" + alias.target.text +
+                                  "': write the law's own name to choose " + kv.first);
+    }
+    out.arguments.push_back(kv);
+  }
+  return out;
+}
+
 Resolved resolve(std::string_view spec) {
-  const ParsedLawSpec parsed = parse_law_spec(spec);
-  auto entry = registry().find(parsed.name);
+  ParsedLawSpec parsed = parse_law_spec(spec);
+  auto [entry, alias] = registry().find(parsed.name);
+  if (alias) parsed = expand_alias(parsed, *alias);
   LawArguments args = bind_law_spec(parsed, entry->parameters);
   return {std::move(entry), std::move(args)};
 }
@@ -153,6 +256,9 @@ LawInfo info_of(const Entry& e, const LawArguments& args) {
   info.spec = args.spec();
   info.summary = e.summary;
   info.parameters = e.parameters;
+  for (const auto& a : registry().all_aliases()) {
+    if (a->target.name == e.name) info.aliases.push_back({a->name, a->target.text});
+  }
   info.reference = e.reference && args.canonical() == e.name;  // exact:pressure=uniform is not the reference
   info.slow = e.slow;
   info.has_poles = law->has_poles();
@@ -231,5 +337,12 @@ void register_law(std::string name, std::string summary, std::function<std::uniq
 }
 
 bool unregister_law(std::string_view name) { return registry().remove(name); }
+
+void register_law_alias(std::string alias, std::string spec) {
+  Registry& r = registry();
+  r.add_alias(r.make_alias(std::move(alias), spec, /*built_in=*/false));
+}
+
+bool unregister_law_alias(std::string_view alias) { return registry().remove_alias(alias); }
 
 }  // namespace frictionlab::friction

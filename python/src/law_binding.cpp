@@ -111,6 +111,9 @@ py::dict info_dict(const friction::LawInfo& info) {
   py::list parameters;
   for (const auto& p : info.parameters) parameters.append(parameter_dict(p));
   d["parameters"] = parameters;
+  py::dict aliases;
+  for (const auto& a : info.aliases) aliases[py::str(a.name)] = a.spec;
+  d["aliases"] = aliases;
   return d;
 }
 
@@ -132,7 +135,10 @@ law is measured against), ``slow`` (bool: milliseconds per call, a cross-check r
 for simulations), ``has_poles`` (bool: the law has denominators that can vanish) and
 ``parameters``: what a spec ``NAME:KEY=VALUE[,KEY=VALUE]`` may set, each a dict with ``key``,
 ``kind`` ("choice" with ``choices``, or "number" with ``min``, ``max`` and its SI ``unit``),
-``default`` (str or None), ``rule`` and ``doc``. Laws registered with register_law() come last.)doc");
+``default`` (str or None), ``rule`` and ``doc``; ``aliases``: the law's other names, a dict from
+each alias to the spec it stands for (e.g. ``{"moller-ellipsoidal": "ellipsoidal"}``): an alias
+works wherever a spec does and is not listed as a law of its own. Laws registered with
+register_law() come last.)doc");
 
   m.def(
       "law_specs", [] { return friction::list_law_specs(); },
@@ -145,8 +151,8 @@ parameter to a value other than its default (e.g. ``"exact:pressure=uniform"``).
 
 A law of coupled dry friction (sliding + spinning) over an elliptic Hertz contact patch.
 
-``spec`` names a registered law (see :func:`laws`), e.g. ``"exact"``, ``"pade-printed"``,
-``"coulomb-decoupled"``, optionally with parameters, ``"NAME:KEY=VALUE[,KEY=VALUE]"`` (e.g.
+``spec`` names a registered law or an alias of one (see :func:`laws`), e.g. ``"exact"``,
+``"pade-printed"``, ``"decoupled"``, optionally with parameters, ``"NAME:KEY=VALUE[,KEY=VALUE]"`` (e.g.
 ``"exact:pressure=uniform"``; docs/extending.md); an unknown name, key or value raises
 ValueError naming it and what is allowed.
 

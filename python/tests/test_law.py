@@ -69,6 +69,12 @@ def test_laws_lists_the_registry_with_summaries(cli):
     law = frictionlab.Law("exact")
     assert (law.name, law.spec, law.reference, law.has_poles) == ("exact", "exact", True, False)
     assert frictionlab.Law("pade-printed").has_poles
+    # An alias is listed with its law, not as a law; it makes that law and keeps the spec as given.
+    names = [i["name"] for i in infos]
+    assert "moller-ellipsoidal" not in names and "coulomb-decoupled" not in names
+    assert infos[names.index("ellipsoidal")]["aliases"] == {"moller-ellipsoidal": "ellipsoidal"}
+    alias = frictionlab.Law("coulomb-decoupled")
+    assert (alias.name, alias.spec) == ("decoupled", "coulomb-decoupled")
     # Variants are specs of the listed laws with one choice parameter set.
     names = [i["name"] for i in infos]
     specs = frictionlab.law_specs()

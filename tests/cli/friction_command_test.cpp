@@ -31,15 +31,49 @@ TEST(LawsCommand, ListsEveryLawOnOneLineAndEachParameterBelowIt) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto laws = friction::list_laws();
   std::size_t parameters = 0;
+  std::size_t with_aliases = 0;
   for (const auto& law : laws) {
     EXPECT_NE(r.out.find("\n" + law.name + " "), std::string::npos) << law.name;
     for (const auto& p : law.parameters) EXPECT_NE(r.out.find("    " + p.describe() + "\n"), std::string::npos) << p.key;
     parameters += law.parameters.size();
+    with_aliases += law.aliases.empty() ? 0 : 1;
   }
   EXPECT_GE(parameters, 1u);  // exact:pressure=...
-  // A header line saying how to write a spec, one line per law, one per parameter.
+  // A header line saying how to write a spec, one line per law, one for its aliases if it has
+  // any, one per parameter.
   EXPECT_EQ(r.out.rfind("Laws, and the parameters a spec NAME:KEY=VALUE[,KEY=VALUE] may set", 0), 0u) << r.out;
-  EXPECT_EQ(count_lines(r.out), 1 + laws.size() + parameters);
+  EXPECT_EQ(count_lines(r.out), 1 + laws.size() + with_aliases + parameters);
+}
+
+TEST(LawsCommand, ListsEachLawOnceWithItsOtherNames) {
+  // The old names of the engines' laws at their defaults are aliases: not lines of their own, but
+  // named on the line below their law.
+  const auto r = run_frictionlab("laws");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.out.find("\nmoller-ellipsoidal "), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("\ncoulomb-decoupled "), std::string::npos) << r.out;
+  const auto below = [&](const std::string& law) {
+    const auto at = r.out.find("\n" + law + " ");
+    if (at == std::string::npos) return std::string();
+    const auto start = r.out.find('\n', at + 1) + 1;
+    return r.out.substr(start, r.out.find('\n', start) - start);
+  };
+  EXPECT_EQ(below("ellipsoidal"), "    also named moller-ellipsoidal");
+  EXPECT_EQ(below("decoupled"), "    also named coulomb-decoupled");
+}
+
+TEST(FrictionCommand, AnAliasIsEchoedAndGivesItsTargetsForces) {
+  const std::string contact = " --U 0.01 --Omega 3 --a 0.01 --b 0.005 --psi 0.2 --N 10 --k 0.3";
+  const auto alias = run_frictionlab("friction --law pade-printed,coulomb-decoupled" + contact);
+  const auto target = run_frictionlab("friction --law pade-printed,decoupled" + contact);
+  ASSERT_EQ(alias.exit_code, 0) << alias.err;
+  ASSERT_EQ(target.exit_code, 0) << target.err;
+  const auto second_line = [](const std::string& s) { return s.substr(s.find('\n') + 1); };
+  const std::string a = second_line(alias.out);
+  const std::string t = second_line(target.out);
+  ASSERT_EQ(a.rfind("coulomb-decoupled,", 0), 0u) << alias.out;
+  ASSERT_EQ(t.rfind("decoupled,", 0), 0u) << target.out;
+  EXPECT_EQ(a.substr(a.find(',')), t.substr(t.find(',')));
 }
 
 TEST(FrictionCommand, SingleContactPrintsOneCsvLine) {

@@ -1,5 +1,6 @@
 // The registry by spec (friction/registry.h): laws made from specs know their spec, bad specs name
-// what is wrong, and user code registers its own laws (thread-safe, no edit of the registry).
+// what is wrong, user code registers its own laws (thread-safe, no edit of the registry), and
+// aliases are other names of a law (or of one of its specs), listed once, with the law.
 
 #include "friction/registry.h"
 
@@ -7,10 +8,15 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cmath>
+#include <limits>
 #include <memory>
+#include <numbers>
+#include <random>
 #include <stdexcept>
 #include <string>
 #include <thread>
+#include <utility>
 #include <vector>
 
 namespace frictionlab::friction {
@@ -189,6 +195,164 @@ TEST(RegistryRegistration, ConcurrentRegistrationAndUseAreSafe) {
     for (int i = 0; i < kPerThread; ++i) EXPECT_TRUE(unregister_law("test-concurrent-" + std::to_string(t) + "-" + std::to_string(i)));
   }
   EXPECT_EQ(list_laws().size(), before);
+}
+
+// A seeded set of contacts that slip and spin (s log-uniform in [1e-3, 1e3], mu in [0.05, 1], all
+// psi, both signs of Omega), plus pure spin and pure slip: two laws that agree bit for bit on all
+// of them are, for a listing, the same law.
+std::vector<ContactInput> probe_contacts() {
+  std::mt19937_64 rng(20261122);
+  std::uniform_real_distribution<double> log_s(-3.0, 3.0), mu(0.05, 1.0), psi(0.0, std::numbers::pi);
+  std::vector<ContactInput> out;
+  for (int i = 0; i < 64; ++i) {
+    const double Omega = (i % 2 == 0) ? 3.0 : -3.0;
+    const double a = 0.004;
+    out.push_back({std::pow(10.0, log_s(rng)) * a * 3.0, Omega, a, mu(rng) * a, psi(rng), 12.0, 0.3});
+  }
+  out.push_back({0.0, 5.0, 0.004, 0.002, 0.4, 12.0, 0.3});
+  out.push_back({0.2, 0.0, 0.004, 0.002, 0.4, 12.0, 0.3});
+  return out;
+}
+
+// Forces, or NaN for all three where the law refuses the input (a pole of the printed law).
+FrictionForces forces_or_nan(const FrictionLaw& law, const ContactInput& in) {
+  try {
+    return law.evaluate(in);
+  } catch (const std::invalid_argument&) {
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    return {nan, nan, nan};
+  }
+}
+
+bool same_bits(double x, double y) { return x == y || (std::isnan(x) && std::isnan(y)); }
+
+bool same_bits(const FrictionLaw& a, const FrictionLaw& b, const std::vector<ContactInput>& set) {
+  for (const auto& in : set) {
+    const FrictionForces f = forces_or_nan(a, in);
+    const FrictionForces g = forces_or_nan(b, in);
+    if (!same_bits(f.F1, g.F1) || !same_bits(f.F2, g.F2) || !same_bits(f.M, g.M)) return false;
+  }
+  return true;
+}
+
+const LawInfo* find_listed(const std::vector<LawInfo>& laws, const std::string& name) {
+  const auto it = std::find_if(laws.begin(), laws.end(), [&](const LawInfo& i) { return i.name == name; });
+  return it == laws.end() ? nullptr : &*it;
+}
+
+bool has_alias(const LawInfo& info, const std::string& alias, const std::string& spec) {
+  return std::any_of(info.aliases.begin(), info.aliases.end(),
+                     [&](const LawAlias& a) { return a.name == alias && a.spec == spec; });
+}
+
+TEST(RegistryAlias, AListingHasNoDuplicateLaw) {
+  // Every "all laws" set (the studies, the benchmark, Python's laws()) is built from list_laws():
+  // no two of its entries may be one law under two names, i.e. compute the same forces bit for
+  // bit on a generic set of contacts, or share a canonical spec.
+  const auto laws = list_laws();
+  const auto set = probe_contacts();
+  for (std::size_t i = 0; i < laws.size(); ++i) {
+    if (laws[i].slow) continue;  // the quadrature cross-check differs from exact in the last bits anyway
+    const auto li = make_law(laws[i].spec);
+    for (std::size_t j = 0; j < i; ++j) {
+      if (laws[j].slow) continue;
+      EXPECT_NE(canonical_law_spec(laws[i].spec), canonical_law_spec(laws[j].spec));
+      EXPECT_FALSE(same_bits(*li, *make_law(laws[j].spec), set))
+          << laws[i].spec << " and " << laws[j].spec << " are the same law: one should be an alias of the other";
+    }
+  }
+}
+
+TEST(RegistryAlias, TheOldNamesAreAliasesListedWithTheirLaw) {
+  const auto laws = list_laws();
+  EXPECT_EQ(find_listed(laws, "moller-ellipsoidal"), nullptr);
+  EXPECT_EQ(find_listed(laws, "coulomb-decoupled"), nullptr);
+  const LawInfo* ellipsoidal = find_listed(laws, "ellipsoidal");
+  const LawInfo* decoupled = find_listed(laws, "decoupled");
+  ASSERT_NE(ellipsoidal, nullptr);
+  ASSERT_NE(decoupled, nullptr);
+  EXPECT_TRUE(has_alias(*ellipsoidal, "moller-ellipsoidal", "ellipsoidal"));
+  EXPECT_TRUE(has_alias(*decoupled, "coulomb-decoupled", "decoupled"));
+  EXPECT_TRUE(find_listed(laws, "exact")->aliases.empty());
+  const auto specs = list_law_specs();
+  EXPECT_EQ(std::count(specs.begin(), specs.end(), "moller-ellipsoidal"), 0);
+  EXPECT_EQ(std::count(specs.begin(), specs.end(), "coulomb-decoupled"), 0);
+}
+
+TEST(RegistryAlias, AnAliasMakesTheSameLawAsItsTargetBitForBit) {
+  const auto set = probe_contacts();
+  for (const auto& [alias, target] : std::vector<std::pair<std::string, std::string>>{
+           {"moller-ellipsoidal", "ellipsoidal"}, {"coulomb-decoupled", "decoupled"}}) {
+    SCOPED_TRACE(alias);
+    const auto law = make_law(alias);
+    EXPECT_EQ(law->name(), target);
+    EXPECT_EQ(law->spec(), alias);  // echoed verbatim in outputs
+    EXPECT_TRUE(same_bits(*law, *make_law(target), set));
+    EXPECT_EQ(canonical_law_spec(alias), target);
+    const LawInfo info = law_info(alias);
+    EXPECT_EQ(info.name, target);
+    EXPECT_EQ(info.spec, alias);
+    EXPECT_EQ(info.summary, law_info(target).summary);
+  }
+  // An alias takes the parameters of its target: the same law as the target's spec.
+  const auto fixed = make_law("moller-ellipsoidal:Rb=0.0021");
+  EXPECT_EQ(fixed->spec(), "moller-ellipsoidal:Rb=0.0021");
+  EXPECT_TRUE(same_bits(*fixed, *make_law("ellipsoidal:Rb=0.0021"), set));
+  EXPECT_EQ(canonical_law_spec("coulomb-decoupled:r_spin=0"), "decoupled:r_spin=0");
+}
+
+TEST(RegistryAlias, AUserAliasStandsForASpecEverywhereANameDoes) {
+  register_law_alias("test-flat-face", "exact:pressure=uniform");
+  const auto set = probe_contacts();
+  const auto law = make_law("test-flat-face");
+  EXPECT_EQ(law->spec(), "test-flat-face");
+  EXPECT_EQ(law->name(), "exact");
+  EXPECT_TRUE(same_bits(*law, *make_law("exact:pressure=uniform"), set));
+  EXPECT_EQ(canonical_law_spec("test-flat-face"), "exact:pressure=uniform");
+  EXPECT_FALSE(law_info("test-flat-face").reference);  // the uniform variant is not the reference
+  EXPECT_TRUE(has_alias(*find_listed(list_laws(), "exact"), "test-flat-face", "exact:pressure=uniform"));
+  // The alias fixes the pressure: setting it again is an error naming the key and the alias.
+  expect_mentions(error_of([] { (void)make_law("test-flat-face:pressure=punch"); }),
+                  {"'test-flat-face:pressure=punch'", "pressure", "'test-flat-face'", "exact:pressure=uniform"});
+  EXPECT_TRUE(unregister_law_alias("test-flat-face"));
+  EXPECT_FALSE(unregister_law_alias("test-flat-face"));
+  expect_mentions(error_of([] { (void)make_law("test-flat-face"); }), {"unknown friction law 'test-flat-face'"});
+  EXPECT_FALSE(has_alias(*find_listed(list_laws(), "exact"), "test-flat-face", "exact:pressure=uniform"));
+}
+
+TEST(RegistryAlias, TheAliasesOfAUserLawGoWithIt) {
+  register_law(scaled_law("test-aliased"));
+  register_law_alias("test-aliased-old", "test-aliased");
+  expect_mentions(error_of([] { register_law(scaled_law("test-aliased-old")); }), {"'test-aliased-old'", "alias"});
+  EXPECT_EQ(make_law("test-aliased-old:gain=0.5")->evaluate({1.0, 0.0, 1.0, 1.0, 0.0, 8.0, 0.5}).F1, 2.0);
+  EXPECT_TRUE(has_alias(*find_listed(list_laws(), "test-aliased"), "test-aliased-old", "test-aliased"));
+  EXPECT_TRUE(unregister_law("test-aliased"));  // its aliases go with it
+  expect_mentions(error_of([] { (void)make_law("test-aliased-old"); }), {"unknown friction law 'test-aliased-old'"});
+  // The name is free again.
+  register_law_alias("test-aliased-old", "exact");
+  EXPECT_TRUE(unregister_law_alias("test-aliased-old"));
+}
+
+TEST(RegistryAlias, BadAliasesAreErrorsNamingThem) {
+  // A target that is not a law, or not a valid spec of one.
+  expect_mentions(error_of([] { register_law_alias("test-alias", "nope"); }),
+                  {"'test-alias'", "unknown friction law 'nope'"});
+  expect_mentions(error_of([] { register_law_alias("test-alias", "exact:pressure=flat"); }),
+                  {"'test-alias'", "pressure = 'flat'"});
+  // An alias of an alias: name the law itself.
+  expect_mentions(error_of([] { register_law_alias("test-alias", "moller-ellipsoidal"); }),
+                  {"'test-alias'", "'moller-ellipsoidal' is an alias", "ellipsoidal"});
+  // Names already taken, by a law or an alias, built-in or registered.
+  expect_mentions(error_of([] { register_law_alias("exact", "pade-printed"); }), {"'exact'", "already"});
+  expect_mentions(error_of([] { register_law_alias("moller-ellipsoidal", "exact"); }),
+                  {"'moller-ellipsoidal'", "already"});
+  expect_mentions(error_of([] { register_law(scaled_law("coulomb-decoupled")); }), {"'coulomb-decoupled'", "alias"});
+  // Names that break the grammar; built-in aliases stay.
+  expect_mentions(error_of([] { register_law_alias("bad alias", "exact"); }), {"'bad alias'"});
+  expect_mentions(error_of([] { register_law_alias("test-alias", ""); }), {"'test-alias'"});
+  expect_mentions(error_of([] { (void)unregister_law_alias("coulomb-decoupled"); }), {"'coulomb-decoupled'", "built-in"});
+  EXPECT_FALSE(unregister_law_alias("test-alias"));
+  EXPECT_EQ(make_law("coulomb-decoupled")->name(), "decoupled");
 }
 
 }  // namespace
