@@ -74,6 +74,18 @@ class BodyRhs final : public OdeRhs {
       }
       sys_.derivatives(x, c, d);
     } catch (const std::exception& e) {
+      // A trial stage of a step that reaches far past a landing sinks the body deep into the plane,
+      // and its next stages grow without bound: to a state that is still finite (~1e165) but whose
+      // slip or normal force overflows, which the law's input check refuses (friction/law.h
+      // validate). Such a state is non-finite in effect, and refused like one: GSL halves the step.
+      // Its kinetic energy has overflowed too (the slip is at most |v| + |omega| R). A refusal at a
+      // state of finite energy is the law's own: the run stops at once.
+      if (!std::isfinite(sys_.kinetic_energy(x))) {
+        last = RhsFailure::nonfinite;
+        message = std::string("the law refuses the trial state at t = ") + message_number(t) +
+                  " s, whose kinetic energy overflows: " + e.what();
+        return RhsStatus::retry;
+      }
       last = RhsFailure::law_error;
       message = std::string("at t = ") + message_number(t) + " s: " + e.what();
       return RhsStatus::stop;

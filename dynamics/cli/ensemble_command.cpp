@@ -45,7 +45,10 @@ void run(const EnsembleCliOptions& opt) {
     job.cancel = &interrupts.flag();
     outcome = ens::run_ensemble_job(job);
   }
-  if (outcome.quiet_failure) throw CLI::RuntimeError(1);
+  // A worker rank stopped because another rank failed, and that rank (0) reports it and exits 1.
+  // This one exits 0: mpirun aborts the whole job as soon as a process exits non-zero, which would
+  // kill rank 0 before it prints the error if this one got there first (as on a loaded machine).
+  if (outcome.quiet_failure) return;
   if (!outcome.writer) {
     if (outcome.interrupted) throw CLI::RuntimeError(kExitIncomplete);
     return;
