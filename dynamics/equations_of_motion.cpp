@@ -17,8 +17,10 @@ BodyOnPlane::BodyOnPlane(Body body, const PlaneContact& plane, const friction::F
   if (plane_.patch == PatchModel::hertz) hertz_.emplace(plane_.E_star);
 }
 
-ContactState BodyOnPlane::contact_state(const StateVector& x) const {
-  ContactState c;
+void BodyOnPlane::contact_state(const StateVector& x, ContactState& c) const {
+  c.a = 0.0;  // the fields set in contact only: zero out of contact
+  c.b = 0.0;
+  c.friction = {};
   c.gamma = vertical(x).normalized();
   const Eigen::Vector3d v = velocity(x);
   const Eigen::Vector3d w = angular_velocity(x);
@@ -69,7 +71,6 @@ ContactState BodyOnPlane::contact_state(const StateVector& x) const {
     c.force += F;
     c.torque += c.point.r.cross(F) - c.friction.M * c.gamma;
   }
-  return c;
 }
 
 void BodyOnPlane::operator()(double /*t*/, const StateVector& x, StateVector& dxdt) const {

@@ -69,7 +69,14 @@ class BodyOnPlane {
   void derivatives(const StateVector& x, const ContactState& c, StateVector& dxdt) const;
 
   /// The contact quantities at x (the same code path as operator()).
-  [[nodiscard]] ContactState contact_state(const StateVector& x) const;
+  [[nodiscard]] ContactState contact_state(const StateVector& x) const {
+    ContactState c;
+    contact_state(x, c);
+    return c;
+  }
+  /// The same, written over `c` (every field): for a caller that keeps it (the integrator's
+  /// right-hand side keeps its latest, dynamics/simulation.cpp), without copying the result.
+  void contact_state(const StateVector& x, ContactState& c) const;
 
   /// Total mechanical energy (J), see the header comment; `c` must be contact_state(x).
   [[nodiscard]] double energy(const StateVector& x, const ContactState& c) const;

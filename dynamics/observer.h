@@ -31,6 +31,12 @@ class OutputLimitReached : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+/// How the samples inside an accepted step are computed (dynamics/step_sampler.h).
+enum class SampleAccuracy {
+  method_step,  ///< one step of the run's method from the step's start: as accurate as the step ends
+  interpolated  ///< the step's cubic Hermite interpolant: no RHS call, order 4 (for slow quantities)
+};
+
 class Observer {
  public:
   virtual ~Observer() = default;
@@ -39,6 +45,10 @@ class Observer {
   virtual void sample(const Sample& s) = 0;
   /// After every accepted step (cheap; for progress display).
   virtual void step(double /*t*/) {}
+  /// What the observer needs of its samples, asked once at the start of a run. An observer that
+  /// reads only quantities that vary slowly over a step (the orientation, for features measured
+  /// against thresholds far above 1e-5) may take interpolated samples, which cost nothing.
+  [[nodiscard]] virtual SampleAccuracy sample_accuracy() const { return SampleAccuracy::method_step; }
 };
 
 }  // namespace frictionlab::dynamics

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <memory>
 #include <stdexcept>
@@ -55,7 +56,9 @@ class BodyRhs final : public OdeRhs {
 
   RhsStatus operator()(double t, const double* y, double* f) override {
     ++rhs_calls;
-    const StateVector x = Eigen::Map<const StateVector>(y);
+    has_last_ = false;
+    StateVector& x = last_x_;
+    x = Eigen::Map<const StateVector>(y);
     if (!x.allFinite()) {
       last = RhsFailure::nonfinite;
       message = describe_nonfinite(sys_, t, x);
@@ -63,7 +66,8 @@ class BodyRhs final : public OdeRhs {
     }
     StateVector d;
     try {
-      const ContactState c = sys_.contact_state(x);
+      ContactState& c = last_contact_;
+      sys_.contact_state(x, c);
       if (poles_) {
         const int crossed = poles_->crossing(c);
         if (crossed >= 0) {
@@ -98,7 +102,17 @@ class BodyRhs final : public OdeRhs {
     last = RhsFailure::none;
     Eigen::Map<StateVector> out(f);
     out = d;
+    has_last_ = true;
     return RhsStatus::ok;
+  }
+
+  // The contact state of the latest successful evaluation if it was at exactly `x` (bit for bit),
+  // else null. The one-step methods evaluate x' at the end of every accepted step last (it is the
+  // next step's first stage, FreeStepper::derivative_at_end): the events between steps reuse that
+  // evaluation instead of computing the same contact state again (one law evaluation a step).
+  [[nodiscard]] const ContactState* contact_at(const StateVector& x) const {
+    if (!has_last_ || std::memcmp(last_x_.data(), x.data(), sizeof(double) * StateLayout::kSize) != 0) return nullptr;
+    return &last_contact_;
   }
 
   long rhs_calls = 0;
@@ -109,6 +123,9 @@ class BodyRhs final : public OdeRhs {
  private:
   const BodyOnPlane& sys_;
   const PoleWatch* poles_;  // null when the law has none
+  bool has_last_ = false;   // the latest evaluation succeeded: last_x_, last_contact_ are its
+  StateVector last_x_;      // the state of the latest evaluation
+  ContactState last_contact_;
 };
 
 Threshold given(const char* key, double value, const char* unit) { return {key, value, unit, "given"}; }
@@ -174,7 +191,7 @@ RunSummary simulate(const BodyOnPlane& sys, const StateVector& x0, const RunOpti
   PoleWatch poles(sys.law(), sys.plane().k);
   BodyRhs ctx(sys, poles.active() ? &poles : nullptr);
   FreeStepper stepper(ctx, StateLayout::kSize, io, abs_scale.data());
-  StepSampler sampler(io.method, sys);
+  StepSampler sampler(io.method, sys, observer ? observer->sample_accuracy() : SampleAccuracy::method_step);
 
   StateVector x = x0;
   double t = 0.0;
@@ -257,8 +274,9 @@ RunSummary simulate(const BodyOnPlane& sys, const StateVector& x0, const RunOpti
       step.x1 = x;
       step.f1 = Eigen::Map<const StateVector>(stepper.derivative_at_end());
 
-      // Samples on the output grid inside (t0, t1], from the step (never by cutting it).
-      for (;;) {
+      // Samples on the output grid inside (t0, t1], from the step (never by cutting it); none
+      // computed without an observer.
+      while (observer) {
         const double ts = static_cast<double>(next_sample) * options.output_dt;
         if (ts > t) break;
         if (!(output_ok = emit(ts, sampler.at(step, ts)))) break;
@@ -267,8 +285,11 @@ RunSummary simulate(const BodyOnPlane& sys, const StateVector& x0, const RunOpti
       if (!output_ok) break;
       if (observer) observer->step(t);
 
-      // Events between steps.
-      const ContactState c = sys.contact_state(x);
+      // Events between steps, from the contact state of the step's last evaluation when it was at x.
+      const ContactState* cached = ctx.contact_at(x);
+      ContactState computed;
+      if (!cached) computed = sys.contact_state(x);
+      const ContactState& c = cached ? *cached : computed;
       if (c.in_contact != in_contact) (c.in_contact ? s.landings : s.liftoffs) += 1;
       in_contact = c.in_contact;
       s.min_normal_force = std::min(s.min_normal_force, c.N);

@@ -33,19 +33,23 @@ class SamplerRhs final : public OdeRhs {
 }  // namespace
 
 struct StepSampler::Impl {
-  Impl(std::string_view method, const BodyOnPlane& sys) : rhs(sys), sub(method, rhs, StateLayout::kSize) {}
+  Impl(std::string_view method, const BodyOnPlane& sys, SampleAccuracy a)
+      : rhs(sys), sub(method, rhs, StateLayout::kSize), accuracy(a) {}
   SamplerRhs rhs;
   SubStepper sub;
+  SampleAccuracy accuracy;
   long fallbacks = 0;
 };
 
-StepSampler::StepSampler(std::string_view method, const BodyOnPlane& sys) : impl_(std::make_unique<Impl>(method, sys)) {}
+StepSampler::StepSampler(std::string_view method, const BodyOnPlane& sys, SampleAccuracy accuracy)
+    : impl_(std::make_unique<Impl>(method, sys, accuracy)) {}
 
 StepSampler::~StepSampler() = default;
 
 StateVector StepSampler::at(const AcceptedStep& s, double t) {
   if (t == s.t1) return s.x1;
   if (t == s.t0) return s.x0;
+  if (impl_->accuracy == SampleAccuracy::interpolated) return cubic_hermite(s, t);
   StateVector x;
   if (impl_->sub.step(s.t0, s.x0.data(), s.f0.data(), t - s.t0, x.data())) return x;
   ++impl_->fallbacks;

@@ -19,12 +19,18 @@
 // steps cut at sample times cost before. If the right-hand side fails inside a sampling step (a law
 // that throws or overflows at a state the integrator never visited), that sample falls back on the
 // cubic Hermite interpolant and the fallback is counted.
+//
+// An observer that reads only slowly varying quantities may ask for interpolated samples instead
+// (Observer::sample_accuracy, dynamics/observer.h): each sample is then the step's cubic Hermite
+// interpolant, at no RHS call. The ensemble's feature samples do (docs/dynamics.md §4 gives why
+// and what it changes).
 
 #include <memory>
 #include <string>
 #include <string_view>
 
 #include "dynamics/equations_of_motion.h"
+#include "dynamics/observer.h"
 #include "dynamics/ode_stepping.h"
 #include "dynamics/state.h"
 
@@ -37,19 +43,22 @@ using AcceptedStep = AcceptedStepOf<StateVector>;
 class StepSampler {
  public:
   /// `method`: the run's stepper (IntegratorOptions::method). Throws std::invalid_argument if unknown.
-  StepSampler(std::string_view method, const BodyOnPlane& sys);
+  /// `accuracy`: interpolated takes every sample from the cubic Hermite interpolant.
+  StepSampler(std::string_view method, const BodyOnPlane& sys,
+              SampleAccuracy accuracy = SampleAccuracy::method_step);
   ~StepSampler();
   StepSampler(const StepSampler&) = delete;
   StepSampler& operator=(const StepSampler&) = delete;
 
-  /// The state at t in [t0, t1]: x0 or x1 at the ends (exactly), else one step of size t - t0 from x0.
+  /// The state at t in [t0, t1]: x0 or x1 at the ends (exactly), else one step of size t - t0 from x0
+  /// (or the cubic Hermite interpolant, if so constructed).
   [[nodiscard]] StateVector at(const AcceptedStep& step, double t);
 
   /// The method that takes the sampling steps.
   [[nodiscard]] const std::string& method() const;
   /// Right-hand-side evaluations made for samples.
   [[nodiscard]] long rhs_calls() const;
-  /// Samples that fell back on the cubic Hermite interpolant.
+  /// Samples that fell back on the cubic Hermite interpolant (never counts interpolated samples).
   [[nodiscard]] long hermite_fallbacks() const;
 
  private:

@@ -8,6 +8,10 @@ RunRecorder::RunRecorder(double weight, double decimation_dt) : weight_(weight),
   assert(weight > 0.0);
 }
 
+SampleAccuracy RunRecorder::sample_accuracy() const {
+  return decimation_dt_ > 0.0 ? SampleAccuracy::method_step : SampleAccuracy::interpolated;
+}
+
 void RunRecorder::sample(const Sample& s) {
   const ContactState& c = s.contact;
   series_.t.push_back(s.t);

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "friction/law.h"
 #include "friction/registry.h"
 #include "test_support.h"
 
@@ -430,6 +431,80 @@ TEST(DynSimulation, TwoOutputIntervalsGiveTheSameStepsAndTheSameFinalStateBitFor
   }
   EXPECT_EQ(samples[0], 51u);  // t = 0, 1e-3, ..., 0.05
   EXPECT_EQ(samples[2], 2u);   // t = 0 and t_end
+}
+
+// The events between steps reuse the contact state of the step's last evaluation (at its end)
+// instead of computing it again: a run evaluates the law once per RHS call (integrator and
+// samples), once per sample, and three times more (the initial state's events, its derivative,
+// the final energy) — not once more per step. The egg stays in contact (N > 0), so every contact
+// state evaluates the law.
+class CountingLaw final : public friction::FrictionLaw {
+ public:
+  explicit CountingLaw(const friction::FrictionLaw& inner) : inner_(inner) {}
+  [[nodiscard]] std::string_view name() const override { return "counting"; }
+  [[nodiscard]] std::string_view summary() const override { return "counts evaluations"; }
+  mutable long evaluations = 0;
+
+ private:
+  [[nodiscard]] friction::FrictionForces do_evaluate(const friction::ContactInput& in) const override {
+    ++evaluations;
+    return inner_.evaluate(in);
+  }
+  const friction::FrictionLaw& inner_;
+};
+
+TEST(DynSimulation, EventsBetweenStepsReuseTheLastEvaluationOfTheStep) {
+  const auto exact = friction::make_law("exact");
+  const CountingLaw law(*exact);
+  const BodyOnPlane sys(egg_body("egg-printed"), PlaneContact{0.1, 1e7, 9.81}, law);
+  RunOptions o;
+  o.t_end = 0.05;
+  o.output_dt = 1e-3;
+  const RunSummary s = simulate(sys, paper_case_a(), o);
+  ASSERT_EQ(reason(s), "t_end") << s.message;
+  ASSERT_EQ(s.liftoffs, 0);
+  ASSERT_GT(s.steps, 10);
+  EXPECT_EQ(law.evaluations, s.rhs_calls + s.sample_rhs_calls + s.samples + 3) << "steps = " << s.steps;
+}
+
+// An observer that asks for interpolated samples (Observer::sample_accuracy) gets the steps'
+// cubic Hermite interpolants at no RHS call; the steps and the final state stay the same bit for
+// bit, and gamma3 (what the ensemble's features read) stays within 1e-5 of the method's samples
+// (the interpolant's error (h w)^4/384 for steps of h w <= 0.3; the egg rocks and spins at w ~ 100
+// 1/s here).
+class InterpolatingRecorder final : public Observer {
+ public:
+  void sample(const Sample& s) override { rows.push_back({s.t, s.x, s.contact, s.energy}); }
+  [[nodiscard]] SampleAccuracy sample_accuracy() const override { return SampleAccuracy::interpolated; }
+  std::vector<Recorder::Row> rows;
+};
+
+TEST(DynSimulation, InterpolatedSamplesCostNoRhsCallAndLeaveTheStepsAlone) {
+  const auto law = friction::make_law("exact");
+  const BodyOnPlane sys(egg_body("egg-printed"), PlaneContact{0.1, 1e7, 9.81}, *law);
+  RunOptions o;
+  o.t_end = 0.3;
+  o.output_dt = 1e-2;
+  Recorder stepped;
+  InterpolatingRecorder interpolated;
+  const RunSummary a = simulate(sys, paper_case_a(), o, &stepped);
+  const RunSummary b = simulate(sys, paper_case_a(), o, &interpolated);
+  ASSERT_EQ(reason(a), "t_end") << a.message;
+  ASSERT_EQ(reason(b), "t_end") << b.message;
+  EXPECT_GT(a.sample_rhs_calls, 0);
+  EXPECT_EQ(b.sample_rhs_calls, 0);
+  EXPECT_EQ(b.hermite_samples, 0);
+  EXPECT_EQ(b.steps, a.steps);
+  EXPECT_EQ(b.rhs_calls, a.rhs_calls);
+  for (int j = 0; j < StateLayout::kSize; ++j) EXPECT_EQ(b.x_final[j], a.x_final[j]) << "component " << j;
+  ASSERT_EQ(interpolated.rows.size(), stepped.rows.size());
+  double worst = 0.0;
+  for (std::size_t i = 0; i < stepped.rows.size(); ++i) {
+    EXPECT_EQ(interpolated.rows[i].t, stepped.rows[i].t);
+    worst = std::max(worst, std::abs(interpolated.rows[i].c.gamma[2] - stepped.rows[i].c.gamma[2]));
+  }
+  EXPECT_LT(worst, 1e-5);
+  EXPECT_GT(worst, 0.0) << "the samples inside steps are interpolated, not stepped";
 }
 
 // Samples inside steps are as accurate as the step ends: a torque-free symmetric top (the egg in

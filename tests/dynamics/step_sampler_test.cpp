@@ -57,6 +57,25 @@ TEST(DynStepSampler, SamplesInsideAStepAreAsAccurateAsItsEnds) {
   EXPECT_EQ(sampler.rhs_calls(), 4 * 12);  // rk8pd: 13 stages, the first is x'(t0)
 }
 
+TEST(DynStepSampler, InterpolatedSamplesAreTheCubicHermiteInterpolantAtNoRhsCall) {
+  // The sampler of an observer that asks for interpolated samples (Observer::sample_accuracy):
+  // the interpolant of order 4, within (w h)^4/384 ~ 4e-6 of the flight, the ends exact.
+  const testing::ForbiddenLaw law;
+  const BodyOnPlane sys(testing::egg_body("egg-printed"), PlaneContact{0.1, 1e7, 0.0}, law);
+  const SpinningFlight f;
+  const double h = 0.2 / f.w;
+  const AcceptedStep step = exact_step(sys, f, 0.1, h);
+  StepSampler sampler("rk8pd", sys, SampleAccuracy::interpolated);
+  for (const double u : {0.1, 0.37, 0.5, 0.81}) {
+    const double t = step.t0 + u * h;
+    EXPECT_EIGEN_NEAR(sampler.at(step, t), cubic_hermite(step, t), 0.0) << "u = " << u;
+    EXPECT_EIGEN_NEAR(sampler.at(step, t), f.at(t), 1e-5) << "u = " << u;
+  }
+  EXPECT_EIGEN_NEAR(sampler.at(step, step.t1), step.x1, 0.0);
+  EXPECT_EQ(sampler.rhs_calls(), 0);
+  EXPECT_EQ(sampler.hermite_fallbacks(), 0) << "interpolation by choice is no fallback";
+}
+
 TEST(DynStepSampler, TheEndsAreReturnedExactly) {
   const testing::ForbiddenLaw law;
   const BodyOnPlane sys(testing::egg_body("egg-printed"), PlaneContact{0.1, 1e7, 0.0}, law);

@@ -29,6 +29,13 @@ TEST(EnsembleRunRecorder, KeepsWhatTheFeaturesNeedAndNothingElse) {
   EXPECT_TRUE(r.trajectory().empty());
 }
 
+TEST(EnsembleRunRecorder, TakesInterpolatedSamplesUnlessItKeepsATrajectory) {
+  // The features read gamma3, which the step's interpolant gives to ~1e-6; a decimated trajectory
+  // also keeps U, N and the kinetic energy, which the Hertz vibration moves within a step.
+  EXPECT_EQ(RunRecorder(9.81, 0.0).sample_accuracy(), SampleAccuracy::interpolated);
+  EXPECT_EQ(RunRecorder(9.81, 0.1).sample_accuracy(), SampleAccuracy::method_step);
+}
+
 TEST(EnsembleRunRecorder, DecimatesToTheFirstSampleOfEachIntervalAndTheLast) {
   RunRecorder r(9.81, 0.1);
   for (int i = 0; i <= 34; ++i) feed(r, 0.01 * i, 0.01 * i);  // t = 0 ... 0.34
