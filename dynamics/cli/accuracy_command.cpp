@@ -15,6 +15,7 @@
 #include "bench/accuracy/report.h"
 #include "bench/accuracy/study.h"
 #include "dynamics/cli/commands.h"
+#include "dynamics/cli/retypable_command.h"
 #include "friction/law_spec.h"
 #include "friction/support/errors.h"
 #include "friction/support/number_format.h"
@@ -108,18 +109,8 @@ void register_accuracy_command(CLI::App& app) {
   cmd->add_option("--threads", opt->threads, "worker threads (0: one per hardware thread)")
       ->capture_default_str();
   cmd->add_flag("--no-plots", opt->no_plots, "write the gnuplot data and scripts but do not run gnuplot");
-  cmd->callback([opt] {
-    // The command as a reader can retype it (options left at their defaults are omitted).
-    const AccuracyOptions defaults;
-    std::ostringstream line;
-    line << "frictionlab accuracy --out " << opt->out;
-    if (!opt->laws.empty()) line << " --laws '" << opt->laws << "'";
-    if (!opt->reference.empty()) line << " --reference " << opt->reference;
-    if (opt->s_points != defaults.s_points) line << " --s-points " << opt->s_points;
-    if (opt->mu_points != defaults.mu_points) line << " --mu-points " << opt->mu_points;
-    if (opt->psi_points != defaults.psi_points) line << " --psi-points " << opt->psi_points;
-    if (opt->no_plots) line << " --no-plots";
-    opt->command = line.str();
+  cmd->callback([opt, cmd] {
+    opt->command = retypable_command(*cmd, {"--threads"});  // threads do not change the results
     run(*opt);
   });
 }

@@ -12,6 +12,7 @@
 #include "bench/calibration/calibration.h"
 #include "bench/calibration/calibration_output.h"
 #include "dynamics/cli/commands.h"
+#include "dynamics/cli/retypable_command.h"
 #include "friction/support/errors.h"
 
 namespace frictionlab::cli {
@@ -86,22 +87,8 @@ void register_calibrate_command(CLI::App& app) {
   cmd->add_option("--threads", opt->threads, "worker threads for exact (0: one per hardware thread)")
       ->capture_default_str();
   cmd->add_flag("--no-plots", opt->no_plots, "write the gnuplot data and scripts but do not run gnuplot");
-  cmd->callback([opt] {
-    const CalibrateOptions defaults;
-    std::ostringstream line;
-    line << "frictionlab calibrate --out " << opt->out;
-    const auto list = [&line](const char* name, const std::vector<std::string>& items) {
-      if (items.empty()) return;
-      line << ' ' << name << ' ';
-      for (std::size_t i = 0; i < items.size(); ++i) line << (i ? "," : "") << items[i];
-    };
-    list("--laws", opt->laws);
-    list("--pressures", opt->pressures);
-    if (opt->s_points != defaults.s_points) line << " --s-points " << opt->s_points;
-    if (opt->mu_points != defaults.mu_points) line << " --mu-points " << opt->mu_points;
-    if (opt->psi_points != defaults.psi_points) line << " --psi-points " << opt->psi_points;
-    if (opt->no_plots) line << " --no-plots";
-    opt->command = line.str();
+  cmd->callback([opt, cmd] {
+    opt->command = retypable_command(*cmd, {"--threads"});  // threads do not change the results
     run(*opt);
   });
 }

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "dynamics/cli/commands.h"
+#include "dynamics/cli/retypable_command.h"
 #include "dynamics/paper/experiment_plan.h"
 #include "dynamics/puck/puck_study.h"
 #include "dynamics/puck/puck_study_report.h"
@@ -65,17 +66,7 @@ void register_puck_study_command(CLI::App& app) {
       ->delimiter(',');
   cmd->add_option("--scenarios", opt->scenarios, "folder of puck-disk.toml and puck-ellipse.toml (default: the shipped ones)");
   cmd->add_flag("--no-plots", opt->no_plots, "write the gnuplot data and scripts but do not run gnuplot");
-  cmd->callback([opt] {
-    std::ostringstream line;
-    line << "frictionlab puck-study --out " << opt->out;
-    if (!opt->laws.empty()) {
-      line << " --laws ";
-      for (std::size_t i = 0; i < opt->laws.size(); ++i) line << (i ? "," : "") << opt->laws[i];
-    }
-    if (!opt->scenarios.empty()) line << " --scenarios " << opt->scenarios;
-    if (opt->no_plots) line << " --no-plots";
-    run(*opt, line.str());
-  });
+  cmd->callback([opt, cmd] { run(*opt, retypable_command(*cmd)); });
 }
 
 }  // namespace frictionlab::cli

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "dynamics/cli/commands.h"
+#include "dynamics/cli/retypable_command.h"
 #include "dynamics/paper/experiment_plan.h"
 #include "dynamics/tippe_top/tippe_top_study.h"
 #include "dynamics/tippe_top/tippe_top_study_report.h"
@@ -67,18 +68,7 @@ void register_tippe_top_command(CLI::App& app) {
   cmd->add_option("--scenario", opt->scenario, "the tippe-top scenario (default: the shipped tippe-top.toml)");
   cmd->add_option("--max-steps", opt->max_steps, "accepted steps allowed per run (a chattering law ends max-steps)");
   cmd->add_flag("--no-plots", opt->no_plots, "write the gnuplot data and scripts but do not run gnuplot");
-  cmd->callback([opt] {
-    std::ostringstream line;
-    line << "frictionlab tippe-top --out " << opt->out;
-    if (!opt->laws.empty()) {
-      line << " --laws ";
-      for (std::size_t i = 0; i < opt->laws.size(); ++i) line << (i ? "," : "") << opt->laws[i];
-    }
-    if (!opt->scenario.empty()) line << " --scenario " << opt->scenario;
-    if (opt->max_steps != dynamics::tippe_top::TippeTopStudyOptions{}.max_steps) line << " --max-steps " << opt->max_steps;
-    if (opt->no_plots) line << " --no-plots";
-    run(*opt, line.str());
-  });
+  cmd->callback([opt, cmd] { run(*opt, retypable_command(*cmd)); });
 }
 
 }  // namespace frictionlab::cli
