@@ -69,7 +69,8 @@ py::tuple run(const std::string& study, const std::string& out, int threads, boo
         continue;
       }
       const long d = done.load();
-      if (progress.is_none() || d == shown || d < 0) continue;
+      // Once the callback has said stop, it is not asked again (the runs that end meanwhile are kept).
+      if (progress.is_none() || cancel.load() || d == shown || d < 0) continue;
       shown = d;
       try {
         if (progress(d, total.load()).is(py::bool_(false))) cancel = true;

@@ -45,7 +45,7 @@ class Collector final : public dynamics::Observer {
       stop_with(py::error_already_set());
       return;
     }
-    if (progress_.is_none()) return;
+    if (progress_.is_none() || cancel_.load()) return;  // a callback that said stop is not asked again
     try {
       const py::object answer = progress_(t, t_end_);
       if (answer.is(py::bool_(false))) cancel_ = true;
