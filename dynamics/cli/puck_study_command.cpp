@@ -21,28 +21,15 @@ namespace {
 
 struct PuckStudyCommandOptions {
   std::string out;
-  std::vector<std::string> laws;  // as split by CLI11 at commas
+  std::string laws;  // a list of specs (friction/law_spec.h), empty: the study's default
   std::string scenarios;
   bool no_plots = false;
 };
 
-// Law specs may hold commas between their key=value pairs ("NAME:k1=v1,k2=v2"): a piece with '='
-// and no ':' continues the spec before it (a law's name never contains '=').
-std::vector<std::string> law_specs(const std::vector<std::string>& pieces) {
-  std::vector<std::string> specs;
-  for (const auto& p : pieces) {
-    if (!specs.empty() && p.find('=') != std::string::npos && p.find(':') == std::string::npos)
-      specs.back() += "," + p;
-    else
-      specs.push_back(p);
-  }
-  return specs;
-}
-
 void run(const PuckStudyCommandOptions& opt, const std::string& command) {
   if (opt.out.empty()) throw std::invalid_argument("--out is empty: name the output folder");
   dynamics::puck::PuckStudyOptions so;
-  so.laws = law_specs(opt.laws);
+  if (!opt.laws.empty()) so.laws = friction::split_law_list(opt.laws);
   so.scenario_dir = opt.scenarios.empty() ? dynamics::paper::default_scenario_dir() : std::filesystem::path(opt.scenarios);
   const dynamics::puck::PuckStudyResults results = dynamics::puck::run_puck_study(so);
   const std::vector<std::string> problems = dynamics::puck::write_puck_study(results, opt.out, command, !opt.no_plots);
@@ -61,9 +48,8 @@ void register_puck_study_command(CLI::App& app) {
                                  "disk's stop times and terminal ratio, the elliptic puck's path (docs/puck.md)");
   cmd->add_option("--out", opt->out, "output folder (created; existing files are replaced)")->required();
   cmd->add_option("--laws", opt->laws,
-                  "comma-separated law specs (default: every registered law, and exact:pressure=uniform, "
-                  "exact:pressure=punch where the registry has them)")
-      ->delimiter(',');
+                  "law specs, separated by ';' or ',' (default: every registered law, and exact:pressure=uniform, "
+                  "exact:pressure=punch where the registry has them)");
   cmd->add_option("--scenarios", opt->scenarios, "folder of puck-disk.toml and puck-ellipse.toml (default: the shipped ones)");
   cmd->add_flag("--no-plots", opt->no_plots, "write the gnuplot data and scripts but do not run gnuplot");
   cmd->callback([opt, cmd] { run(*opt, retypable_command(*cmd)); });

@@ -20,29 +20,16 @@ namespace {
 
 struct TippeTopCommandOptions {
   std::string out;
-  std::vector<std::string> laws;  // as split by CLI11 at commas
+  std::string laws;  // a list of specs (friction/law_spec.h), empty: the study's default
   std::string scenario;
   long max_steps = dynamics::tippe_top::TippeTopStudyOptions{}.max_steps;
   bool no_plots = false;
 };
 
-// Law specs may hold commas between their key=value pairs ("NAME:k1=v1,k2=v2"): a piece with '='
-// and no ':' continues the spec before it (a law's name never contains '=').
-std::vector<std::string> law_specs(const std::vector<std::string>& pieces) {
-  std::vector<std::string> specs;
-  for (const auto& p : pieces) {
-    if (!specs.empty() && p.find('=') != std::string::npos && p.find(':') == std::string::npos)
-      specs.back() += "," + p;
-    else
-      specs.push_back(p);
-  }
-  return specs;
-}
-
 void run(const TippeTopCommandOptions& opt, const std::string& command) {
   if (opt.out.empty()) throw std::invalid_argument("--out is empty: name the output folder");
   dynamics::tippe_top::TippeTopStudyOptions so;
-  so.laws = law_specs(opt.laws);
+  if (!opt.laws.empty()) so.laws = friction::split_law_list(opt.laws);
   so.max_steps = opt.max_steps;
   so.scenario = opt.scenario.empty() ? dynamics::paper::default_scenario_dir() / "tippe-top.toml"
                                      : std::filesystem::path(opt.scenario);
@@ -62,9 +49,8 @@ void register_tippe_top_command(CLI::App& app) {
                                  "and Jellett's quantity (docs/tippe-top.md)");
   cmd->add_option("--out", opt->out, "output folder (created; existing files are replaced)")->required();
   cmd->add_option("--laws", opt->laws,
-                  "comma-separated law specs (default: every registered law that is not slow, and decoupled, "
-                  "decoupled:r_spin=0 where the registry has them)")
-      ->delimiter(',');
+                  "law specs, separated by ';' or ',' (default: every registered law that is not slow, and decoupled, "
+                  "decoupled:r_spin=0 where the registry has them)");
   cmd->add_option("--scenario", opt->scenario, "the tippe-top scenario (default: the shipped tippe-top.toml)");
   cmd->add_option("--max-steps", opt->max_steps, "accepted steps allowed per run (a chattering law ends max-steps)");
   cmd->add_flag("--no-plots", opt->no_plots, "write the gnuplot data and scripts but do not run gnuplot");
