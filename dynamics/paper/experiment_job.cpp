@@ -9,6 +9,7 @@
 
 #include "dynamics/paper/experiment_report.h"
 #include "dynamics/paper/figure_scripts.h"
+#include "friction/support/gnuplot.h"
 #include "dynamics/paper/run_progress.h"
 #include "friction/support/number_format.h"
 
@@ -90,7 +91,7 @@ JobOutcome run_paper_job(const JobOptions& options) {
   const std::vector<FigureGroup> groups = figure_groups(outcome.results);
   const std::vector<std::string> scripts = write_figure_scripts(plots, groups);
   if (options.figures) {
-    outcome.figure_errors = render_figures(plots, scripts);
+    outcome.figure_errors = support::run_gnuplot_scripts(plots, scripts);
   } else {
     outcome.figure_errors.push_back("--no-figures: scripts written to " + plots.string() + ", not drawn");
   }

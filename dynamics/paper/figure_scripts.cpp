@@ -279,18 +279,4 @@ std::vector<std::string> write_figure_scripts(const std::filesystem::path& plots
   return scripts;
 }
 
-std::vector<std::string> render_figures(const std::filesystem::path& plots_dir, const std::vector<std::string>& scripts) {
-  std::vector<std::string> errors;
-  for (const auto& script : scripts) {
-    const support::GnuplotRun run =
-        support::run_gnuplot(plots_dir, script, std::filesystem::path(script).stem().string() + ".log");
-    if (!run.found) {
-      errors.push_back(run.message + ": no PNG drawn (the scripts are in " + plots_dir.string() + ")");
-      break;
-    }
-    if (!run.ok) errors.push_back(run.message);
-  }
-  return errors;
-}
-
 }  // namespace frictionlab::dynamics::paper

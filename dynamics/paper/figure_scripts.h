@@ -50,11 +50,6 @@ struct FigureGroup {
 [[nodiscard]] std::vector<std::string> write_figure_scripts(const std::filesystem::path& plots_dir,
                                                             const std::vector<FigureGroup>& groups);
 
-/// Runs gnuplot on each script in plots_dir. Returns one message per failure (empty: all drawn);
-/// a missing gnuplot is one message.
-[[nodiscard]] std::vector<std::string> render_figures(const std::filesystem::path& plots_dir,
-                                                      const std::vector<std::string>& scripts);
-
 /// How a run is drawn: its colour (by law, the same in every figure; grey for the baseline) and
 /// its dash pattern (by its place in the group: no two runs of a figure share one).
 struct LineStyle {

@@ -266,16 +266,7 @@ std::vector<std::string> write_figures(const PuckStudyResults& r, const std::fil
     support::write_file_atomically(dir / "paths.gp", s.str());
     scripts.push_back("paths.gp");
   }
-  std::vector<std::string> errors;
-  for (const auto& script : scripts) {
-    const support::GnuplotRun run = support::run_gnuplot(dir, script, std::filesystem::path(script).stem().string() + ".log");
-    if (!run.found) {
-      errors.push_back(run.message + ": no PNG drawn (the scripts are in " + dir.string() + ")");
-      break;
-    }
-    if (!run.ok) errors.push_back(run.message);
-  }
-  return errors;
+  return support::run_gnuplot_scripts(dir, scripts);
 }
 
 }  // namespace

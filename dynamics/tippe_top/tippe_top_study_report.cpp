@@ -134,16 +134,7 @@ std::vector<std::string> write_figures(const TippeTopStudyResults& r, const std:
     << "set title 'Jellett''s quantity: conserved without a spin moment, changed by −∫ M γ·r dt with one'\n"
     << jellett_plot << "\n";
   support::write_file_atomically(dir / "jellett.gp", j.str());
-  std::vector<std::string> errors;
-  for (const char* script : {"gamma3.gp", "jellett.gp"}) {
-    const support::GnuplotRun run = support::run_gnuplot(dir, script, std::filesystem::path(script).stem().string() + ".log");
-    if (!run.found) {
-      errors.push_back(run.message + ": no PNG drawn (the scripts are in " + dir.string() + ")");
-      break;
-    }
-    if (!run.ok) errors.push_back(run.message);
-  }
-  return errors;
+  return support::run_gnuplot_scripts(dir, {"gamma3.gp", "jellett.gp"});
 }
 
 }  // namespace

@@ -93,4 +93,18 @@ GnuplotRun run_gnuplot(const std::filesystem::path& dir, const std::filesystem::
   return run;
 }
 
+std::vector<std::string> run_gnuplot_scripts(const std::filesystem::path& dir,
+                                             const std::vector<std::string>& scripts) {
+  std::vector<std::string> errors;
+  for (const auto& script : scripts) {
+    const GnuplotRun run = run_gnuplot(dir, script, std::filesystem::path(script).stem().string() + ".log");
+    if (!run.found) {
+      errors.push_back(run.message + ": no PNG drawn (the scripts are in " + dir.string() + ")");
+      break;
+    }
+    if (!run.ok) errors.push_back(run.message);
+  }
+  return errors;
+}
+
 }  // namespace frictionlab::support

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace frictionlab::support {
 
@@ -27,5 +28,11 @@ struct GnuplotRun {
 /// run is removed; otherwise it is kept for the reader.
 [[nodiscard]] GnuplotRun run_gnuplot(const std::filesystem::path& dir, const std::filesystem::path& script,
                                      const std::filesystem::path& log);
+
+/// Runs every script in `dir` in turn (its log NAME.log beside it) and returns one line per
+/// failure; if gnuplot cannot be started at all, one line saying so and where the scripts are,
+/// and the rest are not tried. Empty when every figure was drawn.
+[[nodiscard]] std::vector<std::string> run_gnuplot_scripts(const std::filesystem::path& dir,
+                                                           const std::vector<std::string>& scripts);
 
 }  // namespace frictionlab::support

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <vector>
 
 namespace frictionlab::support {
 namespace {
@@ -62,6 +63,22 @@ TEST(SupportGnuplot, AFailingScriptKeepsItsLog) {
 TEST(SupportGnuplot, AnUnknownTerminalIsReported) {
   if (!gnuplot_has_terminal("dumb")) GTEST_SKIP() << "gnuplot is not installed";
   EXPECT_FALSE(gnuplot_has_terminal("no-such-terminal"));
+}
+
+TEST(SupportGnuplot, ScriptsRunInTurnEachFailureOneLine) {
+  if (!gnuplot_has_terminal("dumb")) GTEST_SKIP() << "gnuplot is not installed";
+  const fs::path dir = fresh_dir("scripts");
+  write(dir / "one.gp", "set print 'one.txt'\nprint 1\n");
+  write(dir / "bad.gp", "this is not gnuplot\n");
+  write(dir / "two.gp", "set print 'two.txt'\nprint 2\n");
+  const std::vector<std::string> errors = run_gnuplot_scripts(dir, {"one.gp", "bad.gp", "two.gp"});
+  ASSERT_EQ(errors.size(), 1U);
+  EXPECT_NE(errors[0].find("bad.gp"), std::string::npos) << errors[0];
+  EXPECT_TRUE(fs::exists(dir / "one.txt"));
+  EXPECT_TRUE(fs::exists(dir / "two.txt"));  // a failure does not stop the others
+  EXPECT_TRUE(fs::exists(dir / "bad.log"));
+  EXPECT_TRUE(run_gnuplot_scripts(dir, {"one.gp"}).empty());
+  fs::remove_all(dir);
 }
 
 TEST(SupportGnuplot, AMissingFolderIsAMessage) {
