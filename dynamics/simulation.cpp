@@ -11,6 +11,7 @@
 
 #include "dynamics/ode_stepping.h"
 #include "dynamics/pole_watch.h"
+#include "dynamics/run_stops.h"
 #include "dynamics/step_sampler.h"
 #include "dynamics/tolerance_scales.h"
 #include "friction/gsl_error_policy.h"
@@ -127,8 +128,6 @@ class BodyRhs final : public OdeRhs {
   StateVector last_x_;      // the state of the latest evaluation
   ContactState last_contact_;
 };
-
-Threshold given(const char* key, double value, const char* unit) { return {key, value, unit, "given"}; }
 
 }  // namespace
 
@@ -252,7 +251,7 @@ RunSummary simulate(const BodyOnPlane& sys, const StateVector& x0, const RunOpti
     if (t >= options.t_end) {
       stop(Termination::t_end, "");
       s.rule = "t = run.t_end";
-      s.thresholds = {given("run.t_end", options.t_end, "s")};
+      s.thresholds = {given_threshold("run.t_end", options.t_end, "s")};
       break;
     }
     step.t0 = step.t1;
@@ -337,20 +336,11 @@ RunSummary simulate(const BodyOnPlane& sys, const StateVector& x0, const RunOpti
                  "chatters and the model has no sticking branch");
         s.rule = "in contact, not settled, U < run.rest_slip_speed and |Omega| < run.rest_spin for "
                  "run.max_stagnant_steps accepted steps in a row";
-        s.thresholds = {given("run.max_stagnant_steps", static_cast<double>(options.max_stagnant_steps), "steps"),
+        s.thresholds = {given_threshold("run.max_stagnant_steps", static_cast<double>(options.max_stagnant_steps), "steps"),
                         s.settle.time, s.settle.normal_speed, s.rest.slip_speed, s.rest.spin};
         break;
       }
-      if (s.steps >= io.max_steps) {
-        stop(Termination::max_steps, "run.max_steps = " + std::to_string(io.max_steps) + " steps reached");
-        s.rule = "accepted steps = run.max_steps";
-        s.thresholds = {given("run.max_steps", static_cast<double>(io.max_steps), "steps")};
-        break;
-      }
-      if (options.cancel && options.cancel->load(std::memory_order_relaxed)) {
-        stop(Termination::interrupted, "interrupted");
-        break;
-      }
+      if (stop_at_step_limits(s.steps, io.max_steps, options.cancel, s, stop)) break;
       continue;
     }
 
@@ -360,18 +350,13 @@ RunSummary simulate(const BodyOnPlane& sys, const StateVector& x0, const RunOpti
     if (outcome.kind == StepOutcome::stopped_by_rhs) {
       stop(Termination::law_error, ctx.message);
     } else if (ctx.last == RhsFailure::pole) {
-      stop(Termination::law_pole, "the denominator of " + std::string(PoleWatch::output_name(ctx.pole_output)) +
-                                      " of friction law '" + std::string(sys.law().name()) + "' passes through 0 within " +
-                                      message_number(std::abs(h)) + " s after t = " + message_number(t) +
-                                      " s: the motion cannot be continued past this pole; at the last good state " +
-                                      describe_friction(sys, x));
-      s.rule = "a denominator of the friction law's outputs passes through 0 (friction/law.h pole_denominators)";
+      stop(Termination::law_pole, law_pole_message(PoleWatch::output_name(ctx.pole_output), sys.law().name(),
+                                                   std::abs(h), t, describe_friction(sys, x)));
+      s.rule = kLawPoleRule;
     } else if (ctx.last == RhsFailure::nonfinite) {
-      stop(Termination::non_finite, ctx.message + " (no step size down to machine precision avoids it)");
+      stop(Termination::non_finite, non_finite_message(ctx.message));
     } else {
-      stop(Termination::integrator_failure,
-           "GSL: " + outcome.gsl_message + " (no step above machine precision meets the tolerance) at t = " +
-               message_number(t) + " s; at that state " + describe_friction(sys, x));
+      stop(Termination::integrator_failure, integrator_failure_message(outcome.gsl_message, t, describe_friction(sys, x)));
     }
     break;
   }

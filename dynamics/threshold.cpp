@@ -1,5 +1,7 @@
 #include "dynamics/threshold.h"
 
+#include <utility>
+
 #include "friction/support/number_format.h"
 
 namespace frictionlab::dynamics {
@@ -15,6 +17,10 @@ Threshold resolve_threshold(std::string key, std::string unit, const std::option
   t.value = factor * scale;
   t.source = "default: " + support::significant(factor, 6) + " " + scale_name + ", " + scale_note;
   return t;
+}
+
+Threshold given_threshold(std::string key, double value, std::string unit) {
+  return {std::move(key), value, std::move(unit), "given"};
 }
 
 }  // namespace frictionlab::dynamics

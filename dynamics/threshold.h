@@ -21,4 +21,7 @@ struct Threshold {
                                           double factor, double scale, const std::string& scale_name,
                                           const std::string& scale_note);
 
+/// A run option as given, that decided a run's end (source "given"), e.g. run.max_steps.
+[[nodiscard]] Threshold given_threshold(std::string key, double value, std::string unit);
+
 }  // namespace frictionlab::dynamics

@@ -8,6 +8,7 @@
 
 #include "dynamics/ode_stepping.h"
 #include "dynamics/pole_watch.h"
+#include "dynamics/run_stops.h"
 #include "dynamics/rest_event.h"
 #include "friction/support/number_format.h"
 
@@ -162,8 +163,6 @@ std::pair<double, PuckState> locate(const Step& s, Sampler& sampler, Below below
   }
   return {hi, x_hi};
 }
-
-Threshold given(const char* key, double value, const char* unit) { return {key, value, unit, "given"}; }
 
 }  // namespace
 
@@ -322,7 +321,7 @@ PuckRunSummary simulate_puck(const PuckOnPlane& sys, const PuckState& x0, const 
     if (t >= options.t_end) {
       stop(Termination::t_end, "");
       s.rule = "t = run.t_end";
-      s.thresholds = {given("run.t_end", options.t_end, "s")};
+      s.thresholds = {given_threshold("run.t_end", options.t_end, "s")};
       break;
     }
     step.t0 = step.t1;
@@ -382,16 +381,7 @@ PuckRunSummary simulate_puck(const PuckOnPlane& sys, const PuckState& x0, const 
         step.f1 = f_at(x);
       }
       if (!holds.slip || !holds.spin) poles.set_reference(pole_point(sys, sys.contact(x, holds)));
-      if (s.steps >= io.max_steps) {
-        stop(Termination::max_steps, "run.max_steps = " + std::to_string(io.max_steps) + " steps reached");
-        s.rule = "accepted steps = run.max_steps";
-        s.thresholds = {given("run.max_steps", static_cast<double>(io.max_steps), "steps")};
-        break;
-      }
-      if (options.cancel && options.cancel->load(std::memory_order_relaxed)) {
-        stop(Termination::interrupted, "interrupted");
-        break;
-      }
+      if (stop_at_step_limits(s.steps, io.max_steps, options.cancel, s, stop)) break;
       continue;
     }
 
@@ -400,19 +390,14 @@ PuckRunSummary simulate_puck(const PuckOnPlane& sys, const PuckState& x0, const 
     if (outcome.kind == StepOutcome::stopped_by_rhs) {
       stop(Termination::law_error, rhs.message);
     } else if (rhs.last == RhsFailure::pole) {
-      std::ostringstream m;
-      m << "the denominator of " << PoleWatch::output_name(rhs.pole_output) << " of friction law '" << sys.law().name()
-        << "' passes through 0 within " << num(std::abs(h)) << " s after t = " << num(t)
-        << " s: the motion cannot be continued past this pole; at the last good state "
-        << describe_friction(sys, x, holds);
-      stop(Termination::law_pole, m.str());
-      s.rule = "a denominator of the friction law's outputs passes through 0 (friction/law.h pole_denominators)";
+      stop(Termination::law_pole, law_pole_message(PoleWatch::output_name(rhs.pole_output), sys.law().name(),
+                                                   std::abs(h), t, describe_friction(sys, x, holds)));
+      s.rule = kLawPoleRule;
     } else if (rhs.last == RhsFailure::nonfinite) {
-      stop(Termination::non_finite, rhs.message + " (no step size down to machine precision avoids it)");
+      stop(Termination::non_finite, non_finite_message(rhs.message));
     } else {
-      stop(Termination::integrator_failure, "GSL: " + outcome.gsl_message +
-                                                " (no step above machine precision meets the tolerance) at t = " + num(t) +
-                                                " s; at that state " + describe_friction(sys, x, holds));
+      stop(Termination::integrator_failure,
+           integrator_failure_message(outcome.gsl_message, t, describe_friction(sys, x, holds)));
     }
     break;
   }
