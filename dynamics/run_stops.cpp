@@ -11,6 +11,10 @@ std::string law_pole_message(std::string_view output, std::string_view law, doub
          " s: the motion cannot be continued past this pole; at the last good state " + state;
 }
 
+std::string non_finite_step_message(double t) {
+  return "the state became non-finite after the step from t = " + support::message_number(t) + " s";
+}
+
 std::string non_finite_message(const std::string& rhs_message) {
   return rhs_message + " (no step size down to machine precision avoids it)";
 }

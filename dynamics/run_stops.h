@@ -17,6 +17,17 @@ namespace frictionlab::dynamics {
 inline constexpr const char* kLawPoleRule =
     "a denominator of the friction law's outputs passes through 0 (friction/law.h pole_denominators)";
 
+/// Before a step: stops the run with reason t_end (and its rule and threshold) once `t` reached
+/// `t_end`; returns whether it did.
+template <class Summary, class Stop>
+bool stop_at_t_end(double t, double t_end, Summary& summary, Stop&& stop) {
+  if (t < t_end) return false;
+  stop(Termination::t_end, "");
+  summary.rule = "t = run.t_end";
+  summary.thresholds = {given_threshold("run.t_end", t_end, "s")};
+  return true;
+}
+
 /// After an accepted step: stops the run (`stop(Termination, message)`, and the rule and
 /// thresholds into `summary`) when `steps` reached `max_steps`, or when `cancel` is set; returns
 /// whether it did. `Summary` has `rule` and `thresholds` (RunSummary, PuckRunSummary).
@@ -39,6 +50,9 @@ bool stop_at_step_limits(long steps, long max_steps, const std::atomic<bool>* ca
 /// `state` describes the friction at the last good state.
 [[nodiscard]] std::string law_pole_message(std::string_view output, std::string_view law, double h, double t,
                                            const std::string& state);
+
+/// An accepted step from `t` ended on a non-finite state.
+[[nodiscard]] std::string non_finite_step_message(double t);
 
 /// No step size down to machine precision avoids a non-finite state; `rhs_message` says where.
 [[nodiscard]] std::string non_finite_message(const std::string& rhs_message);

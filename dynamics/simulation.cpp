@@ -248,12 +248,7 @@ RunSummary simulate(const BodyOnPlane& sys, const StateVector& x0, const RunOpti
   long stagnant_unsettled = 0;  // accepted steps in a row in the stagnation region, not settled
 
   while (output_ok) {
-    if (t >= options.t_end) {
-      stop(Termination::t_end, "");
-      s.rule = "t = run.t_end";
-      s.thresholds = {given_threshold("run.t_end", options.t_end, "s")};
-      break;
-    }
+    if (stop_at_t_end(t, options.t_end, s, stop)) break;
     step.t0 = step.t1;
     step.x0 = step.x1;
     step.f0 = step.f1;
@@ -265,8 +260,7 @@ RunSummary simulate(const BodyOnPlane& sys, const StateVector& x0, const RunOpti
       if (!x.allFinite()) {
         x = step.x0;
         t = step.t0;
-        stop(Termination::non_finite,
-             "the state became non-finite after the step from t = " + message_number(t) + " s");
+        stop(Termination::non_finite, non_finite_step_message(t));
         break;
       }
       step.t1 = t;

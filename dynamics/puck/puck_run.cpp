@@ -318,12 +318,7 @@ PuckRunSummary simulate_puck(const PuckOnPlane& sys, const PuckState& x0, const 
       s.thresholds = {s.slip_speed, s.spin};
       break;
     }
-    if (t >= options.t_end) {
-      stop(Termination::t_end, "");
-      s.rule = "t = run.t_end";
-      s.thresholds = {given_threshold("run.t_end", options.t_end, "s")};
-      break;
-    }
+    if (stop_at_t_end(t, options.t_end, s, stop)) break;
     step.t0 = step.t1;
     step.x0 = step.x1;
     step.f0 = step.f1;
@@ -335,7 +330,7 @@ PuckRunSummary simulate_puck(const PuckOnPlane& sys, const PuckState& x0, const 
       if (!x.allFinite()) {
         x = step.x0;
         t = step.t0;
-        stop(Termination::non_finite, "the state became non-finite after the step from t = " + num(t) + " s");
+        stop(Termination::non_finite, non_finite_step_message(t));
         break;
       }
       step.t1 = t;

@@ -32,6 +32,19 @@ TEST(DynRunStops, MaxStepsStopsAtTheLimitWithItsRuleAndThreshold) {
   EXPECT_EQ(s.thresholds[0].source, "given");
 }
 
+TEST(DynRunStops, TEndStopsOnceReached) {
+  RunSummary s;
+  Stops stops;
+  EXPECT_FALSE(stop_at_t_end(0.999, 1.0, s, stops.recorder()));
+  EXPECT_TRUE(stop_at_t_end(1.0, 1.0, s, stops.recorder()));
+  ASSERT_EQ(stops.seen.size(), 1U);
+  EXPECT_EQ(stops.seen[0].first, Termination::t_end);
+  EXPECT_EQ(s.rule, "t = run.t_end");
+  ASSERT_EQ(s.thresholds.size(), 1U);
+  EXPECT_EQ(s.thresholds[0].key, "run.t_end");
+  EXPECT_EQ(s.thresholds[0].value, 1.0);
+}
+
 TEST(DynRunStops, ACancelledJobIsInterrupted) {
   RunSummary s;
   Stops stops;
@@ -48,6 +61,7 @@ TEST(DynRunStops, MessagesNameTheOutputTheLawTheTimesAndTheState) {
   const std::string pole = law_pole_message("F2", "pade-printed", 1e-3, 0.316, "U = 1 m/s");
   for (const char* part : {"F2", "'pade-printed'", "0.001 s", "t = 0.316 s", "U = 1 m/s"})
     EXPECT_NE(pole.find(part), std::string::npos) << part << " in " << pole;
+  EXPECT_NE(non_finite_step_message(4.25).find("t = 4.25 s"), std::string::npos);
   EXPECT_EQ(non_finite_message("gamma is NaN").rfind("gamma is NaN", 0), 0U);
   const std::string gsl = integrator_failure_message("step size too small", 2.5, "Omega = 3 1/s");
   for (const char* part : {"GSL: step size too small", "t = 2.5 s", "Omega = 3 1/s"})
