@@ -7,6 +7,14 @@ support::Json vec3(const Eigen::Vector3d& v) { return support::Json::array({v[0]
 
 }  // namespace
 
+support::Json termination_json(Termination reason, const std::string& message, const std::string& rule,
+                               const std::vector<Threshold>& thresholds) {
+  support::Json list = support::Json::array();
+  for (const Threshold& t : thresholds)
+    list.push_back({{"key", t.key}, {"value", t.value}, {"unit", t.unit}, {"source", t.source}});
+  return {{"reason", to_string(reason)}, {"message", message}, {"rule", rule}, {"thresholds", list}};
+}
+
 support::Json summary_json(const Scenario& scenario, const RunSummary& s) {
   const Body& body = scenario.body;
   const double weight = body.mass * scenario.contact.g;
@@ -14,11 +22,7 @@ support::Json summary_json(const Scenario& scenario, const RunSummary& s) {
   support::Json j;
   j["scenario"] = {{"name", scenario.name}, {"source", scenario.source}, {"overrides", scenario.overrides}};
   j["law"] = scenario.law;
-  support::Json thresholds = support::Json::array();
-  for (const Threshold& t : s.thresholds)
-    thresholds.push_back({{"key", t.key}, {"value", t.value}, {"unit", t.unit}, {"source", t.source}});
-  j["termination"] = {{"reason", to_string(s.reason)}, {"message", s.message}, {"rule", s.rule},
-                      {"thresholds", thresholds}};
+  j["termination"] = termination_json(s.reason, s.message, s.rule, s.thresholds);
   j["final_time"] = s.t_final;
   j["t_end"] = scenario.run.t_end;
   j["steps"] = s.steps;

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "dynamics/puck/terminal_ratio.h"
+#include "dynamics/summary_json.h"
 
 namespace frictionlab::dynamics::puck {
 namespace {
@@ -27,11 +28,7 @@ support::Json puck_summary_json(const PuckScenario& scenario, const friction::Fr
   j["scenario"] = {{"name", scenario.name}, {"source", scenario.source}, {"overrides", scenario.overrides}};
   j["model"] = "puck";
   j["law"] = scenario.law;
-  support::Json thresholds = support::Json::array();
-  for (const Threshold& t : s.thresholds)
-    thresholds.push_back({{"key", t.key}, {"value", t.value}, {"unit", t.unit}, {"source", t.source}});
-  j["termination"] = {{"reason", to_string(s.reason)}, {"message", s.message}, {"rule", s.rule},
-                      {"thresholds", thresholds}};
+  j["termination"] = termination_json(s.reason, s.message, s.rule, s.thresholds);
   j["final_time"] = s.t_final;
   j["t_end"] = scenario.run.t_end;
   j["slip_stop_time"] = s.slip_stop_time;
