@@ -35,17 +35,10 @@ std::vector<LawParameter> DecoupledLaw::parameters() {
 }
 
 LawPromises DecoupledLaw::promises() const {
-  LawPromises p;
-  p.F1_in_Omega = Parity::even;
-  p.F2_in_Omega = Parity::even;  // F2 = 0
-  p.M_in_Omega = Parity::odd;
-  p.pi_periodic_in_psi = true;  // psi plays no part
-  p.psi_mirror = true;
-  p.dissipative = true;
+  LawPromises p = LawPromises::closed_form_without_F2();
   p.bounded = !r_spin_;           // M0 <= (3 pi/16) kN a for the Hertz default only
   p.exact_pure_spin = !r_spin_;
   p.whole_domain = !r_spin_ || *r_spin_ <= 1.0;  // N r_spin overflows only above 1 m
-  p.tolerance = 1e-14;  // rounding of a closed form
   return p;
 }
 

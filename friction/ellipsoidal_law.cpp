@@ -54,18 +54,11 @@ std::vector<LawParameter> EllipsoidalLaw::parameters() {
 }
 
 LawPromises EllipsoidalLaw::promises() const {
-  LawPromises p;
-  p.F1_in_Omega = Parity::even;
-  p.F2_in_Omega = Parity::even;  // F2 = 0
-  p.M_in_Omega = Parity::odd;
-  p.pi_periodic_in_psi = true;  // psi plays no part
-  p.psi_mirror = true;
-  p.dissipative = true;
+  LawPromises p = LawPromises::closed_form_without_F2();
   // |M| <= kN Rb: within kN a for the Hertz default (Rb <= (3 pi/16) a), not for a fixed Rb.
   p.bounded = !Rb_;
   // kN Rb overflows only for Rb > 1 m (kN is a finite double): below, every input is evaluated.
   p.whole_domain = !Rb_ || *Rb_ <= 1.0;
-  p.tolerance = 1e-14;  // rounding of a closed form
   return p;
 }
 

@@ -80,4 +80,16 @@ double slip_ratio(double U, double length, double Omega) {
   return std::ldexp(mu / (ml * mo), eu - el - eo);
 }
 
+LawPromises LawPromises::closed_form_without_F2() {
+  LawPromises p;
+  p.F1_in_Omega = Parity::even;
+  p.F2_in_Omega = Parity::even;  // F2 = 0
+  p.M_in_Omega = Parity::odd;
+  p.pi_periodic_in_psi = true;  // psi plays no part
+  p.psi_mirror = true;
+  p.dissipative = true;
+  p.tolerance = 1e-14;  // rounding of a closed form
+  return p;
+}
+
 }  // namespace frictionlab::friction

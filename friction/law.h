@@ -77,6 +77,11 @@ struct LawPromises {
   bool whole_domain = false;        ///< evaluates every input validate() accepts with
                                     ///< b/a >= min_axis_ratio, never throwing
   double tolerance = 0.0;           ///< per kN and kNa, to which the promises hold
+
+  /// What every closed-form law without F2 and without psi keeps (the ellipsoidal, MuJoCo and
+  /// decoupled laws): F1 even and M odd in Omega, F2 = 0, psi plays no part, dissipative, to the
+  /// rounding of a closed form (1e-14). The rest (bounded, whole_domain, pure spin) is the law's.
+  [[nodiscard]] static LawPromises closed_form_without_F2();
 };
 
 /// A law of coupled dry friction. Implementations are `final`, stateless after construction,

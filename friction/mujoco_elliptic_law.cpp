@@ -48,16 +48,9 @@ std::vector<LawParameter> MujocoEllipticLaw::parameters() {
 }
 
 LawPromises MujocoEllipticLaw::promises() const {
-  LawPromises p;
-  p.F1_in_Omega = Parity::even;
-  p.F2_in_Omega = Parity::even;  // F2 = 0
-  p.M_in_Omega = Parity::odd;
-  p.pi_periodic_in_psi = true;  // psi plays no part
-  p.psi_mirror = true;
-  p.dissipative = true;
+  LawPromises p = LawPromises::closed_form_without_F2();
   p.bounded = false;                     // N torsional knows nothing of the patch
   p.whole_domain = torsional_ <= 1.0;    // N torsional overflows only above 1 m
-  p.tolerance = 1e-14;                   // rounding of a closed form
   return p;
 }
 
