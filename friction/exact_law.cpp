@@ -513,8 +513,10 @@ constexpr double kRimSplitDistance = 0.25;
 constexpr double kRimTrapezoidExponent = 32.0;
 constexpr double kRimTrapezoidMaxDistance = 3.0;
 // Where the lower bound on the zeros' distance (uniform_rim) is at least this, the rule uses the
-// bound and skips the zeros (then N <= 16).
-constexpr double kRimZeroFreeDistance = 2.0;
+// bound and skips the zeros (then N <= 46): a few more nodes, never fewer, and no complex square
+// roots and logarithms. Measured on the benchmark set (docs/benchmarks.md), ICRs with
+// 2 < |c~| < 10: ~470 ns per call with 2.0, ~320 ns with 0.7, no gain below.
+constexpr double kRimZeroFreeDistance = 0.7;
 // Below this a zero is on the rim to round-off: a kink |t - x| sqrt(g), analytic on each side of
 // the split, so it is left out of the rule choice.
 constexpr double kRimOnEdge = 1e-14;
