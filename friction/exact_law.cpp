@@ -893,6 +893,7 @@ Result uniform_inside(double mu, double p, double q) {
     Cs[jj] = fc * t2 * i4;
     const double L = fd * t3 * i4;
     L2s[jj] = L * L;
+    if (4 * j == N) break;  // u = K/2 is its own reflection
     const auto jr = static_cast<std::size_t>(half - j);
     const double iL = 1.0 / L;
     Ss[jr] = Cs[jj] * iL;
