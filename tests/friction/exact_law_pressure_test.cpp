@@ -191,6 +191,28 @@ TEST(ExactPressure, AgreesWithTheReferenceOnASeededSet) {
   }
 }
 
+TEST(ExactPressure, UniformAgreesWithTheReferenceInsideSlenderPatches) {
+  // The uniform law takes the ICR reduction in the Jacobi amplitude for the ICR inside (not too
+  // near the rim) and the rim integrals elsewhere (docs/pressure-models.md §3): slender patches,
+  // where 1/L is nearly singular, with the ICR at the centre, half-way, and on either side of
+  // |c~| = 0.97, where the law changes route; against the independent 2-D quadrature.
+  const ExactLaw law(Pressure::uniform);
+  const ExactReferenceLaw reference(Pressure::uniform);
+  for (const double mu : {0.01, 0.04}) {
+    for (const double rho : {1e-3, 0.5, 0.965, 0.975}) {
+      const double psi = mu < 0.02 ? 0.4 : 1.3;
+      const double s = rho / std::hypot(std::sin(psi), std::cos(psi) / mu);  // |c~| = rho
+      const ContactInput in = unit(s, mu, psi);
+      const FrictionForces f = law.evaluate(in);
+      const FrictionForces r = reference.evaluate(in);
+      SCOPED_TRACE("mu = " + std::to_string(mu) + " |c~| = " + std::to_string(rho));
+      EXPECT_NEAR(f.F1, r.F1, 2.0 * kTol);
+      EXPECT_NEAR(f.F2, r.F2, 2.0 * kTol);
+      EXPECT_NEAR(f.M, r.M, 2.0 * kTol);
+    }
+  }
+}
+
 TEST(ExactPressure, FiniteBelowTheAccurateRange) {
   for (const Pressure p : kAll) {
     const ExactLaw law(p);
