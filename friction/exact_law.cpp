@@ -899,7 +899,15 @@ Result uniform_inside(double mu, double p, double q) {
   // sn(K - u) = cn/dn, cn(K - u) = mu sn/dn, dn(K - u) = mu/dn).
   std::array<double, kThetaBase / 2 + 1> Cs, Ss, L2s;
   const double mu2 = mu * mu;
-  for (int j = 0; j <= N / 4; ++j) {
+  // u = 0 and its reflection u = K exactly: sn, cn, dn = 0, 1, 1 and 1, 0, mu.
+  Ss[0] = 0.0;
+  Cs[0] = 1.0;
+  L2s[0] = 1.0;
+  Ss[static_cast<std::size_t>(half)] = 1.0;
+  Cs[static_cast<std::size_t>(half)] = 0.0;
+  L2s[static_cast<std::size_t>(half)] = mu2;
+  const double ifd = th3_0 / th4_0;
+  for (int j = 1; j <= N / 4; ++j) {
     const ThetaTable::Row& z = table.row[static_cast<std::size_t>(j * stride)];
     double t1 = 0.0;
     double t2 = 0.0;
@@ -911,7 +919,8 @@ Result uniform_inside(double mu, double p, double q) {
       t3 += c3[k] * z.c_even[k];
       t4 += c4[k] * z.c_even[k];
     }
-    const double i4 = 1.0 / t4;
+    const double inv = 1.0 / (t3 * t4);  // one division for 1/theta_4 and 1/dn
+    const double i4 = t3 * inv;
     const auto jj = static_cast<std::size_t>(j);
     Ss[jj] = fs * t1 * i4;
     Cs[jj] = fc * t2 * i4;
@@ -919,7 +928,7 @@ Result uniform_inside(double mu, double p, double q) {
     L2s[jj] = L * L;
     if (4 * j == N) break;  // u = K/2 is its own reflection
     const auto jr = static_cast<std::size_t>(half - j);
-    const double iL = 1.0 / L;
+    const double iL = ifd * t4 * t4 * inv;
     Ss[jr] = Cs[jj] * iL;
     Cs[jr] = mu * Ss[jj] * iL;
     L2s[jr] = mu2 * iL * iL;
