@@ -213,6 +213,27 @@ TEST(ExactPressure, UniformAgreesWithTheReferenceInsideSlenderPatches) {
   }
 }
 
+TEST(ExactPressure, UniformAgreesWithTheReferenceInsideRoundPatches) {
+  // For the ICR inside, the trapezoid rule's node count comes from a bound on the distance of
+  // sqrt(D)'s branch points that grows with mu (docs/pressure-models.md §3): the fewest nodes for
+  // a given |c~| are taken in round patches, checked here against the independent 2-D quadrature.
+  const ExactLaw law(Pressure::uniform);
+  const ExactReferenceLaw reference(Pressure::uniform);
+  for (const double mu : {0.6, 0.95}) {
+    for (const double rho : {1e-3, 0.6, 0.95}) {
+      const double psi = 0.7;
+      const double s = rho / std::hypot(std::sin(psi), std::cos(psi) / mu);  // |c~| = rho
+      const ContactInput in = unit(s, mu, psi);
+      const FrictionForces f = law.evaluate(in);
+      const FrictionForces r = reference.evaluate(in);
+      SCOPED_TRACE("mu = " + std::to_string(mu) + " |c~| = " + std::to_string(rho));
+      EXPECT_NEAR(f.F1, r.F1, 2.0 * kTol);
+      EXPECT_NEAR(f.F2, r.F2, 2.0 * kTol);
+      EXPECT_NEAR(f.M, r.M, 2.0 * kTol);
+    }
+  }
+}
+
 TEST(ExactPressure, UniformAgreesWithTheReferenceOutsideTheRim) {
   // The uniform law takes the window of the ICR reduction in the variable chi of
   // rho sin phi = sin chi for the ICR outside, and the rim integrals within ~0.03 of the rim
