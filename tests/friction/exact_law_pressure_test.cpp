@@ -191,47 +191,37 @@ TEST(ExactPressure, AgreesWithTheReferenceOnASeededSet) {
   }
 }
 
+// The uniform law against the independent 2-D quadrature at the ICR scaled distance |c~| = rho
+// (docs/pressure-models.md §3): both promise 1e-10, so they must agree to twice that.
+void expect_uniform_matches_reference_at(double mu, double rho, double psi, double omega = 1.0) {
+  static const ExactLaw law(Pressure::uniform);
+  static const ExactReferenceLaw reference(Pressure::uniform);
+  const double s = rho / std::hypot(std::sin(psi), std::cos(psi) / mu);
+  const ContactInput in = unit(s, mu, psi, omega);
+  const FrictionForces f = law.evaluate(in);
+  const FrictionForces r = reference.evaluate(in);
+  SCOPED_TRACE("mu = " + std::to_string(mu) + " |c~| = " + std::to_string(rho) + " psi = " + std::to_string(psi) +
+               " Omega = " + std::to_string(omega));
+  EXPECT_NEAR(f.F1, r.F1, 2.0 * kTol);
+  EXPECT_NEAR(f.F2, r.F2, 2.0 * kTol);
+  EXPECT_NEAR(f.M, r.M, 2.0 * kTol);
+}
+
 TEST(ExactPressure, UniformAgreesWithTheReferenceInsideSlenderPatches) {
   // The uniform law takes the ICR reduction in the Jacobi amplitude for the ICR inside (not too
   // near the rim) and the rim integrals elsewhere (docs/pressure-models.md §3): slender patches,
   // where 1/L is nearly singular, with the ICR at the centre, half-way, and on either side of
   // |c~| = 0.97, where the law changes route; against the independent 2-D quadrature.
-  const ExactLaw law(Pressure::uniform);
-  const ExactReferenceLaw reference(Pressure::uniform);
-  for (const double mu : {0.01, 0.04}) {
-    for (const double rho : {1e-3, 0.5, 0.965, 0.975}) {
-      const double psi = mu < 0.02 ? 0.4 : 1.3;
-      const double s = rho / std::hypot(std::sin(psi), std::cos(psi) / mu);  // |c~| = rho
-      const ContactInput in = unit(s, mu, psi);
-      const FrictionForces f = law.evaluate(in);
-      const FrictionForces r = reference.evaluate(in);
-      SCOPED_TRACE("mu = " + std::to_string(mu) + " |c~| = " + std::to_string(rho));
-      EXPECT_NEAR(f.F1, r.F1, 2.0 * kTol);
-      EXPECT_NEAR(f.F2, r.F2, 2.0 * kTol);
-      EXPECT_NEAR(f.M, r.M, 2.0 * kTol);
-    }
-  }
+  for (const double mu : {0.01, 0.04})
+    for (const double rho : {1e-3, 0.5, 0.965, 0.975}) expect_uniform_matches_reference_at(mu, rho, mu < 0.02 ? 0.4 : 1.3);
 }
 
 TEST(ExactPressure, UniformAgreesWithTheReferenceInsideRoundPatches) {
   // For the ICR inside, the trapezoid rule's node count comes from a bound on the distance of
   // sqrt(D)'s branch points that grows with mu (docs/pressure-models.md §3): the fewest nodes for
   // a given |c~| are taken in round patches, checked here against the independent 2-D quadrature.
-  const ExactLaw law(Pressure::uniform);
-  const ExactReferenceLaw reference(Pressure::uniform);
-  for (const double mu : {0.6, 0.95}) {
-    for (const double rho : {1e-3, 0.6, 0.95}) {
-      const double psi = 0.7;
-      const double s = rho / std::hypot(std::sin(psi), std::cos(psi) / mu);  // |c~| = rho
-      const ContactInput in = unit(s, mu, psi);
-      const FrictionForces f = law.evaluate(in);
-      const FrictionForces r = reference.evaluate(in);
-      SCOPED_TRACE("mu = " + std::to_string(mu) + " |c~| = " + std::to_string(rho));
-      EXPECT_NEAR(f.F1, r.F1, 2.0 * kTol);
-      EXPECT_NEAR(f.F2, r.F2, 2.0 * kTol);
-      EXPECT_NEAR(f.M, r.M, 2.0 * kTol);
-    }
-  }
+  for (const double mu : {0.6, 0.95})
+    for (const double rho : {1e-3, 0.6, 0.95}) expect_uniform_matches_reference_at(mu, rho, 0.7);
 }
 
 TEST(ExactPressure, UniformAgreesWithTheReferenceOutsideTheRim) {
@@ -240,22 +230,12 @@ TEST(ExactPressure, UniformAgreesWithTheReferenceOutsideTheRim) {
   // (docs/pressure-models.md §3): ellipses from slender to round, the ICR on either side of that
   // boundary (|c~| = 1.02, 1.05), near (1.5), and far (6, 400, where the rule takes few nodes);
   // generic psi, both spins; against the independent 2-D quadrature.
-  const ExactLaw law(Pressure::uniform);
-  const ExactReferenceLaw reference(Pressure::uniform);
   int i = 0;
   for (const double mu : {0.012, 0.2, 0.75}) {
     for (const double rho : {1.02, 1.05, 1.5, 6.0, 400.0}) {
       const double psi = 0.35 + 0.9 * i;  // not on an axis, where symmetry zeroes a component
-      const double omega = i % 2 == 0 ? 1.0 : -1.0;
+      expect_uniform_matches_reference_at(mu, rho, psi, i % 2 == 0 ? 1.0 : -1.0);
       ++i;
-      const double s = rho / std::hypot(std::sin(psi), std::cos(psi) / mu);  // |c~| = rho
-      const ContactInput in = unit(s, mu, psi, omega);
-      const FrictionForces f = law.evaluate(in);
-      const FrictionForces r = reference.evaluate(in);
-      SCOPED_TRACE("mu = " + std::to_string(mu) + " |c~| = " + std::to_string(rho) + " psi = " + std::to_string(psi));
-      EXPECT_NEAR(f.F1, r.F1, 2.0 * kTol);
-      EXPECT_NEAR(f.F2, r.F2, 2.0 * kTol);
-      EXPECT_NEAR(f.M, r.M, 2.0 * kTol);
     }
   }
 }
