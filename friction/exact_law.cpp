@@ -19,6 +19,9 @@
 #include <array>
 #include <cmath>
 #include <complex>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 #include <cstddef>
 #include <numbers>
 #include <stdexcept>
@@ -31,6 +34,18 @@ namespace frictionlab::friction {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
+
+// Two doubles side by side (the GCC/Clang vector extension: SSE2 on x86-64, NEON on arm64, two
+// scalars elsewhere) for the quadrature loops whose nodes are independent: each lane rounds as the
+// scalar code would, and the square roots and divisions of two nodes issue together.
+using Lanes = double __attribute__((vector_size(16)));
+Lanes lanes_sqrt(Lanes x) {
+#if defined(__SSE2__)
+  return _mm_sqrt_pd(x);
+#else
+  return Lanes{std::sqrt(x[0]), std::sqrt(x[1])};
+#endif
+}
 
 // Above this slip ratio s the fast-slip expansion replaces quadrature: its first neglected terms
 // are O(s^-3) kNa in M and O(s^-4) kN in F1, F2 (measured: M s / (d3/5) = 1 + c/s^2 with
@@ -293,7 +308,7 @@ double bernstein_sigma(double x0, double x1, Point z) {
 }
 
 struct Singularities {
-  std::array<Point, 6> z{};
+  std::array<Point, 8> z{};
   int count = 0;
 };
 
@@ -343,14 +358,15 @@ struct Panel {
   const GaussRule* rule;
 };
 
+constexpr int kMaxRefineDepth = 12;
 struct Panels {
-  std::array<Panel, 2 * kMaxPanelsPerSide + 2> p{};
+  std::array<Panel, 4 * kMaxPanelsPerSide + 2> p;  // the first count set; not zeroed (per call)
   int count = 0;
 };
 
 // Panels covering [-T, T]: one if a rule of at most kMaxSinglePanelRule nodes suffices,
 // otherwise graded geometrically towards the projection of the nearest singularity.
-void build_panels(double T, const Singularities& sing, bool with_poly, Panels& out) {
+void build_panels(double T, const Singularities& sing, bool with_poly, Panels& out, bool refine = false) {
   out.count = 0;
   if (const GaussRule* g = choose_rule(-T, T, sing, kMaxSinglePanelRule, with_poly)) {
     out.p[0] = {-T, T, g};
@@ -386,18 +402,25 @@ void build_panels(double T, const Singularities& sing, bool with_poly, Panels& o
   const int nr = (xc < T) ? grade(T - xc, right) : 0;
   const GaussTable& table = gauss_table();
   const int max_n = table.rules.back().n;
-  auto add = [&](double x0, double x1) {
+  // refine: a panel that no rule covers (another singularity near it) is halved until one does.
+  auto add = [&](auto&& self, double x0, double x1, int depth) -> void {
     const GaussRule* g = choose_rule(x0, x1, sing, max_n, with_poly);
+    if (!g && refine && depth < kMaxRefineDepth && out.count + 2 < static_cast<int>(out.p.size())) {
+      const double xm = 0.5 * (x0 + x1);
+      self(self, x0, xm, depth + 1);
+      self(self, xm, x1, depth + 1);
+      return;
+    }
     out.p[static_cast<std::size_t>(out.count++)] = {x0, x1, g ? g : &table.rules.back()};
   };
   for (int i = nl - 1; i >= 0; --i) {
     const double x0 = xc - left[static_cast<std::size_t>(i)];
     const double x1 = (i == 0) ? xc : xc - left[static_cast<std::size_t>(i - 1)];
-    add(x0, x1);
+    add(add, x0, x1, 0);
   }
   for (int i = 0; i < nr; ++i) {
     const double x0 = (i == 0) ? xc : xc + right[static_cast<std::size_t>(i - 1)];
-    add(x0, xc + right[static_cast<std::size_t>(i)]);
+    add(add, x0, xc + right[static_cast<std::size_t>(i)], 0);
   }
 }
 
@@ -918,7 +941,7 @@ Result uniform_inside(double mu, double p, double q) {
   // is even in e), weighted 1/2 each.
   // sn, cn, dn for u in [0, K/2] by the series, in [K/2, K] by u -> K - u (DLMF 22.4.3:
   // sn(K - u) = cn/dn, cn(K - u) = mu sn/dn, dn(K - u) = mu/dn).
-  std::array<double, kThetaBase / 2 + 1> Cs, Ss, L2s;
+  std::array<double, kThetaBase / 2 + 2> Cs, Ss, L2s;  // one more: a zero node pads the last pair
   const double mu2 = mu * mu;
   // u = 0 and its reflection u = K exactly: sn, cn, dn = 0, 1, 1 and 1, 0, mu.
   Ss[0] = 0.0;
@@ -954,30 +977,42 @@ Result uniform_inside(double mu, double p, double q) {
     Cs[jr] = mu * Ss[jj] * iL;
     L2s[jr] = mu2 * iL * iL;
   }
-  double g1 = 0.0;
-  double g2 = 0.0;
-  double h = 0.0;
-  for (int j = 0; j <= half; ++j) {
-    const auto jj = static_cast<std::size_t>(j);
-    const double C = Cs[jj];
-    const double S = Ss[jj];
-    const double w = (j == 0 || j == half) ? 0.5 : 1.0;
-    const double A = C * p;
-    const double B = S * q;
-    const double X = C * q;
-    const double Y = S * p;
-    const double ex_p = X - Y;  // e x c~ at (C, S)
-    const double ex_m = X + Y;  // minus e x c~ at (-C, S)
-    const double D_p = 1.0 - ex_p * ex_p;
-    const double D_m = 1.0 - ex_m * ex_m;
-    const double r_p = w * std::sqrt(D_p);
-    const double r_m = w * std::sqrt(D_m);
-    const double ec_p = r_p * (A + B);  // sqrt(D) e.c~
-    const double ec_m = r_m * (B - A);
-    g1 += C * (ec_p - ec_m);
-    g2 += S * (ec_p + ec_m);
-    h += e2 * S * C * (ex_p * ec_p + ex_m * ec_m) + (1.0 / 3.0) * L2s[jj] * (r_p * D_p + r_m * D_m);
+  // Two nodes at a time (j, j + 1 in the lanes); a node (C, S, L^2) = 0 past the last one adds
+  // exactly 0 (D = 1, e.c~ = 0, L^2 = 0).
+  {
+    const auto pad = static_cast<std::size_t>(half + 1);
+    Cs[pad] = 0.0;
+    Ss[pad] = 0.0;
+    L2s[pad] = 0.0;
   }
+  Lanes g1v = {0.0, 0.0};
+  Lanes g2v = {0.0, 0.0};
+  Lanes hv = {0.0, 0.0};
+  for (int j = 0; j <= half; j += 2) {
+    const auto jj = static_cast<std::size_t>(j);
+    const Lanes C = {Cs[jj], Cs[jj + 1]};
+    const Lanes S = {Ss[jj], Ss[jj + 1]};
+    const Lanes L2 = {L2s[jj], L2s[jj + 1]};
+    const Lanes w = {(j == 0 || j == half) ? 0.5 : 1.0, (j + 1 == half) ? 0.5 : 1.0};
+    const Lanes A = C * p;
+    const Lanes B = S * q;
+    const Lanes X = C * q;
+    const Lanes Y = S * p;
+    const Lanes ex_p = X - Y;  // e x c~ at (C, S)
+    const Lanes ex_m = X + Y;  // minus e x c~ at (-C, S)
+    const Lanes D_p = 1.0 - ex_p * ex_p;
+    const Lanes D_m = 1.0 - ex_m * ex_m;
+    const Lanes r_p = w * lanes_sqrt(D_p);
+    const Lanes r_m = w * lanes_sqrt(D_m);
+    const Lanes ec_p = r_p * (A + B);  // sqrt(D) e.c~
+    const Lanes ec_m = r_m * (B - A);
+    g1v += C * (ec_p - ec_m);
+    g2v += S * (ec_p + ec_m);
+    hv += e2 * S * C * (ex_p * ec_p + ex_m * ec_m) + (1.0 / 3.0) * L2 * (r_p * D_p + r_m * D_m);
+  }
+  const double g1 = g1v[0] + g1v[1];
+  const double g2 = g2v[0] + g2v[1];
+  const double h = hv[0] + hv[1];
   const double k = (2.0 / kPi) * (2.0 * K / N);
   return {-k * g1, -k * mu * g2, k * h};
 }
@@ -1052,18 +1087,93 @@ Result uniform_window(double mu, double p, double q, double rho, double s, bool&
   const double mu2 = mu * mu;
   const double qm = mu2 * q;
   const double irho = 1.0 / rho;
+  // Two nodes at a time, j and j + 1 in the two lanes: (cos, sin) of j 2pi/n, rotated by
+  // 2 (2pi/n) per step; chi = -pi/2 + j 2 pi/n: sin chi = -cos, cos chi = sin. The lane past the
+  // last node (odd count) is dropped from the sums.
+  const double c2d = cd * cd - sd * sd;
+  const double s2d = 2.0 * sd * cd;
+  Lanes cj = {cd, c2d};
+  Lanes sj = {sd, s2d};
+  Lanes g1 = {0.0, 0.0};
+  Lanes g2 = {0.0, 0.0};
+  Lanes h = {0.0, 0.0};
+  for (int j = 1; j < half; j += 2) {
+    const Lanes schi = -cj;
+    const Lanes c2 = sj * sj;
+    const Lanes c_next = cj * c2d - sj * s2d;
+    sj = sj * c2d + cj * s2d;
+    cj = c_next;
+    const Lanes sphi = schi * irho;
+    const Lanes root = lanes_sqrt((rho - schi) * (rho + schi));  // rho cos phi
+    const Lanes cphi = root * irho;
+    const Lanes C = cphi * u0x + sphi * nx;
+    const Lanes S = cphi * u0y + sphi * ny;
+    const Lanes L = lanes_sqrt(C * C + mu2 * S * S);
+    const Lanes Ls = L * s;
+    const Lanes vc = C * p + S * qm;
+    const auto along = vc > 0.0;
+    const Lanes num = along ? Ls + vc : mu2 * schi * schi;
+    const Lanes den = along ? Ls : Ls * (Ls - vc);
+    const Lanes ld = L * den;
+    const Lanes inv3 = 1.0 / (ld * root);  // one division per node for 1/(L den) and 1/root
+    const Lanes inv = inv3 * root;
+    const Lanes a = c2 * inv * den;  // cos^2 chi / L
+    const Lanes one_plus = num * inv * L;
+    const Lanes hj = c2 * one_plus * (s + L * (root + (1.0 / 3.0) * c2 * ld * inv3));
+    const Lanes keep = {1.0, j + 1 < half ? 1.0 : 0.0};
+    const auto in = keep > 0.0;
+    const Lanes zero = {0.0, 0.0};
+    g1 += in ? a * C : zero;
+    g2 += in ? a * S : zero;
+    h += in ? hj : zero;
+  }
+  const double k = (2.0 / kPi) * (2.0 * kPi / n);
+  return {k * (g1[0] + g1[1]), k * mu * (g2[0] + g2[1]), k * (h[0] + h[1])};
+}
+
+// Uniform pressure, ICR outside, where the trapezoid of uniform_window would need too many nodes
+// (L's branch points near the real chi axis: slender patches, directions near the minor axis):
+// the same integrand over chi in [-pi/2, pi/2], by composite Gauss-Legendre panels (build_panels)
+// in t = tan(chi/2) in [-1, 1], graded towards the nearest singularity. In t: the poles of the
+// substitution at t = +-i (with the margin of the Hertz window), the branch points of
+// rho cos phi = sqrt(rho^2 - sin^2 chi) at sin chi = +-rho, t = (+-1 + i sqrt(rho^2 - 1))/rho, and
+// those of L at sin chi = +-w, w = rho sin phi* (as in uniform_window), t = +-w/(1 + sqrt(1 - w^2))
+// and their reciprocals (chi and pi - chi).
+Result uniform_window_graded(double mu, double p, double q, double rho, double s) {
+  using Complex = std::complex<double>;
+  const double cx = p / rho;
+  const double cy = q / rho;
+  const double u0x = -cx;
+  const double u0y = -cy;
+  const double nx = -cy;
+  const double ny = cx;
+  Singularities sing;
+  sing.z[0] = {0.0, kWeierstrassPoleMargin};
+  sing.z[1] = {1.0 / rho, std::sqrt((rho - 1.0) * (rho + 1.0)) / rho};
+  sing.z[2] = {-sing.z[1].re, sing.z[1].im};
+  sing.count = 3;
+  const double e2 = (1.0 - mu) * (1.0 + mu);
+  if (e2 > 0.0) {
+    const double e = std::sqrt(e2);
+    const Complex w(rho * (-u0x) / e, rho * mu * u0y / e);
+    const Complex t = w / (1.0 + std::sqrt(1.0 - w * w));
+    const Complex ti = 1.0 / t;
+    sing.z[3] = {t.real(), t.imag()};
+    sing.z[4] = {-t.real(), t.imag()};
+    sing.z[5] = {ti.real(), ti.imag()};
+    sing.z[6] = {-ti.real(), ti.imag()};
+    sing.count = 7;
+  }
+  Panels panels;
+  build_panels(1.0, sing, false, panels, true);
+  const double mu2 = mu * mu;
+  const double qm = mu2 * q;
+  const double irho = 1.0 / rho;
   double g1 = 0.0;
   double g2 = 0.0;
   double h = 0.0;
-  // (cos, sin) of j 2pi/n; chi = -pi/2 + j 2 pi/n: sin chi = -cos, cos chi = sin.
-  double cj = cd;
-  double sj = sd;
-  for (int j = 1; j < half; ++j) {
-    const double schi = -cj;
-    const double c2 = sj * sj;
-    const double c_next = cj * cd - sj * sd;
-    sj = sj * cd + cj * sd;
-    cj = c_next;
+  for_each_node(panels, [&](double cchi, double schi, double wgt) {
+    const double c2 = cchi * cchi;
     const double sphi = schi * irho;
     const double root = std::sqrt((rho - schi) * (rho + schi));  // rho cos phi
     const double cphi = root * irho;
@@ -1076,15 +1186,15 @@ Result uniform_window(double mu, double p, double q, double rho, double s, bool&
     const double num = along ? Ls + vc : mu2 * schi * schi;
     const double den = along ? Ls : Ls * (Ls - vc);
     const double ld = L * den;
-    const double inv3 = 1.0 / (ld * root);  // one division per node for 1/(L den) and 1/root
+    const double inv3 = 1.0 / (ld * root);
     const double inv = inv3 * root;
-    const double a = c2 * inv * den;  // cos^2 chi / L
+    const double a = wgt * c2 * inv * den;
     g1 += a * C;
     g2 += a * S;
     const double one_plus = num * inv * L;
-    h += c2 * one_plus * (s + L * (root + (1.0 / 3.0) * c2 * ld * inv3));
-  }
-  const double k = (2.0 / kPi) * (2.0 * kPi / n);
+    h += wgt * c2 * one_plus * (s + L * (root + (1.0 / 3.0) * c2 * ld * inv3));
+  });
+  const double k = 2.0 / kPi;
   return {k * g1, k * mu * g2, k * h};
 }
 
@@ -1188,10 +1298,9 @@ FrictionForces ExactLaw::do_evaluate(const ContactInput& in) const {
       r = uniform_inside(mu, p, q);
     } else {
       bool done = false;
-      if (mu >= kSlenderAxisRatio && rho2 > 1.0) {
-        r = uniform_window(mu, p, q, std::sqrt(rho2), s, done);
-      }
-      if (!done) r = uniform_rim(mu, p, mu * q);
+      const bool window = mu >= kSlenderAxisRatio && rho2 > 1.0;
+      if (window) r = uniform_window(mu, p, q, std::sqrt(rho2), s, done);
+      if (!done) r = window ? uniform_window_graded(mu, p, q, std::sqrt(rho2), s) : uniform_rim(mu, p, mu * q);
     }
   } else if (pressure_ == Pressure::punch) {
     r = icr_reduction<true>(mu, e2, p, q, rho2, s);

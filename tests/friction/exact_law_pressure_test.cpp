@@ -240,6 +240,25 @@ TEST(ExactPressure, UniformAgreesWithTheReferenceOutsideTheRim) {
   }
 }
 
+TEST(ExactPressure, UniformAgreesWithTheReferenceWhereTheWindowIsGraded) {
+  // Where L's branch points come near the real chi axis (slender patches) or the ICR near the rim,
+  // the window's trapezoid rule would need more than its largest node count, and graded
+  // Gauss-Legendre panels take over (docs/pressure-models.md §3): the ICR from just outside the
+  // rim (|c~| = 1.0005) to |c~| = 3, the patch's axis near the slip direction (psi = 0.02) and
+  // nearly across it (psi = 1.45, 1.53: there the panels graded towards the nearest singularity
+  // alone were off by up to 5e-4, until panels that no rule covers were halved); both spins;
+  // against the independent 2-D quadrature.
+  int i = 0;
+  for (const double mu : {0.014, 0.03, 0.1}) {
+    for (const double rho : {1.0005, 1.02, 1.4, 3.0}) {
+      for (const double psi : {0.02, 1.45, 1.53}) {
+        expect_uniform_matches_reference_at(mu, rho, psi, i % 2 == 0 ? 1.0 : -1.0);
+        ++i;
+      }
+    }
+  }
+}
+
 TEST(ExactPressure, FiniteBelowTheAccurateRange) {
   for (const Pressure p : kAll) {
     const ExactLaw law(p);
