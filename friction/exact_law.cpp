@@ -440,6 +440,28 @@ void for_each_node(const Panels& panels, F&& f) {
   }
 }
 
+// The same, two nodes at a time in Lanes; a panel with an odd node count repeats its last node
+// at weight 0 (a finite integrand there: it adds exactly 0).
+template <class F>
+void for_each_node_pair(const Panels& panels, F&& f) {
+  for (int k = 0; k < panels.count; ++k) {
+    const Panel& pn = panels.p[static_cast<std::size_t>(k)];
+    const double m = 0.5 * (pn.x0 + pn.x1);
+    const double h = 0.5 * (pn.x1 - pn.x0);
+    const GaussRule& g = *pn.rule;
+    for (int i = 0; i < g.n; i += 2) {
+      const bool pair = i + 1 < g.n;
+      const auto i0 = static_cast<std::size_t>(i);
+      const auto i1 = pair ? i0 + 1 : i0;
+      const Lanes x = {g.x[i0], g.x[i1]};
+      const Lanes wg = {g.w[i0], pair ? g.w[i1] : 0.0};
+      const Lanes t = m + h * x;
+      const Lanes iq = 1.0 / (1.0 + t * t);
+      f((1.0 - t * t) * iq, 2.0 * t * iq, 2.0 * h * wg * iq);
+    }
+  }
+}
+
 // Half-widths, in the Weierstrass parameter, of the gap (|phi| < acos(1/rho)) and of the window
 // (|phi| < asin(1/rho)); and the directions u0 at their centres.
 double gap_half_width(double rho) { return std::sqrt((rho - 1.0) / (rho + 1.0)); }
@@ -470,24 +492,24 @@ Result gap_integral(double mu, double e2, double p, double q, double rho) {
   Panels panels;
   build_panels(T, singularities(u0x, u0y, mu, std::sqrt(e2)), false, panels);
   const double rho2 = rho * rho;
-  double g1 = 0.0;
-  double g2 = 0.0;
-  double h = 0.0;
-  for_each_node(panels, [&](double cphi, double sphi, double w) {
-    const double C = cphi * u0x + sphi * cx;
-    const double S = cphi * u0y + sphi * cy;
-    const double L = std::sqrt(C * C + mu * mu * S * S);
-    const double iL = 1.0 / L;
-    const double D = 1.0 - rho2 * cphi * cphi;
-    const double chord = kPunch ? 1.0 : D;
-    const double a = w * chord * rho * sphi * iL;  // e.c~ = rho sin phi
+  Lanes g1 = {0.0, 0.0};
+  Lanes g2 = {0.0, 0.0};
+  Lanes h = {0.0, 0.0};
+  for_each_node_pair(panels, [&](Lanes cphi, Lanes sphi, Lanes w) {
+    const Lanes C = cphi * u0x + sphi * cx;
+    const Lanes S = cphi * u0y + sphi * cy;
+    const Lanes L = lanes_sqrt(C * C + mu * mu * S * S);
+    const Lanes iL = 1.0 / L;
+    const Lanes D = 1.0 - rho2 * cphi * cphi;
+    const Lanes chord = kPunch ? Lanes{1.0, 1.0} : D;
+    const Lanes a = w * chord * rho * sphi * iL;  // e.c~ = rho sin phi
     g1 += a * C;
     g2 += a * mu * S;
-    const double X = -e2 * rho2 * S * C * cphi * sphi;  // e x c~ = -rho cos phi
+    const Lanes X = -e2 * rho2 * S * C * cphi * sphi;  // e x c~ = -rho cos phi
     h += w * chord * (X * iL + (kPunch ? 0.5 : 0.25) * D * L);
   });
   const double k = kPunch ? 0.5 : 0.75;
-  return {-k * g1, -k * g2, k * h};
+  return {-k * (g1[0] + g1[1]), -k * (g2[0] + g2[1]), k * (h[0] + h[1])};
 }
 
 // ICR outside: the window of directions that hit the patch,
@@ -509,34 +531,34 @@ Result window_integral(double mu, double e2, double p, double q, double rho, dou
   const double mu2 = mu * mu;
   const double mr2 = mu2 * rho2;
   const double qm = mu2 * q;  // v.c' = C p + mu^2 S q
-  double g1 = 0.0;
-  double g2 = 0.0;
-  double h = 0.0;
-  for_each_node(panels, [&](double cphi, double sphi, double w) {
-    const double C = cphi * u0x + sphi * nx;
-    const double S = cphi * u0y + sphi * ny;
-    const double L = std::sqrt(C * C + mu2 * S * S);
+  Lanes g1 = {0.0, 0.0};
+  Lanes g2 = {0.0, 0.0};
+  Lanes h = {0.0, 0.0};
+  for_each_node_pair(panels, [&](Lanes cphi, Lanes sphi, Lanes w) {
+    const Lanes C = cphi * u0x + sphi * nx;
+    const Lanes S = cphi * u0y + sphi * ny;
+    const Lanes L = lanes_sqrt(C * C + mu2 * S * S);
     // 1 + d.c^ (d = v/|v|, c^ = c'/|c'|) without cancellation: as (Ls + v.c')/(Ls) where
     // v.c' > 0, else as (d x c^)^2/(1 - d.c^), using Lagrange's identity
     // (Ls)^2 (d x c^)^2 = (v x c')^2 = mu^2 rho^2 sin^2 phi. (Ls - v.c' alone cancels to nothing
     // where d is nearly along c^, which a slit (mu ~ 1e-9) sees at O(1) angles.)
-    const double Ls = L * s;
-    const double vc = C * p + S * qm;
-    const bool along = vc > 0.0;
-    const double num = along ? Ls + vc : mr2 * sphi * sphi;
-    const double den = along ? Ls : Ls * (Ls - vc);
-    const double inv = 1.0 / (L * den);  // one division per node
-    const double iL = inv * den;
-    const double D = 1.0 - rho2 * sphi * sphi;
-    const double chord = kPunch ? 1.0 : D;
-    const double a = w * chord * cphi * iL;
+    const Lanes Ls = L * s;
+    const Lanes vc = C * p + S * qm;
+    const auto along = vc > 0.0;
+    const Lanes num = along ? Ls + vc : mr2 * sphi * sphi;
+    const Lanes den = along ? Ls : Ls * (Ls - vc);
+    const Lanes inv = 1.0 / (L * den);  // one division per node
+    const Lanes iL = inv * den;
+    const Lanes D = 1.0 - rho2 * sphi * sphi;
+    const Lanes chord = kPunch ? Lanes{1.0, 1.0} : D;
+    const Lanes a = w * chord * cphi * iL;
     g1 += a * C;
     g2 += a * mu * S;
-    const double one_plus = num * inv * L;
+    const Lanes one_plus = num * inv * L;
     h += w * one_plus * chord * (s * rho * cphi + L * (rho2 * cphi * cphi + (kPunch ? 0.5 : 0.25) * D));
   });
   const double k = kPunch ? 0.5 : 0.75;
-  return {k * rho * g1, k * rho * g2, k * h};
+  return {k * rho * (g1[0] + g1[1]), k * rho * (g2[0] + g2[1]), k * (h[0] + h[1])};
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -1169,33 +1191,33 @@ Result uniform_window_graded(double mu, double p, double q, double rho, double s
   const double mu2 = mu * mu;
   const double qm = mu2 * q;
   const double irho = 1.0 / rho;
-  double g1 = 0.0;
-  double g2 = 0.0;
-  double h = 0.0;
-  for_each_node(panels, [&](double cchi, double schi, double wgt) {
-    const double c2 = cchi * cchi;
-    const double sphi = schi * irho;
-    const double root = std::sqrt((rho - schi) * (rho + schi));  // rho cos phi
-    const double cphi = root * irho;
-    const double C = cphi * u0x + sphi * nx;
-    const double S = cphi * u0y + sphi * ny;
-    const double L = std::sqrt(C * C + mu2 * S * S);
-    const double Ls = L * s;
-    const double vc = C * p + S * qm;
-    const bool along = vc > 0.0;
-    const double num = along ? Ls + vc : mu2 * schi * schi;
-    const double den = along ? Ls : Ls * (Ls - vc);
-    const double ld = L * den;
-    const double inv3 = 1.0 / (ld * root);
-    const double inv = inv3 * root;
-    const double a = wgt * c2 * inv * den;
+  Lanes g1 = {0.0, 0.0};
+  Lanes g2 = {0.0, 0.0};
+  Lanes h = {0.0, 0.0};
+  for_each_node_pair(panels, [&](Lanes cchi, Lanes schi, Lanes wgt) {
+    const Lanes c2 = cchi * cchi;
+    const Lanes sphi = schi * irho;
+    const Lanes root = lanes_sqrt((rho - schi) * (rho + schi));  // rho cos phi
+    const Lanes cphi = root * irho;
+    const Lanes C = cphi * u0x + sphi * nx;
+    const Lanes S = cphi * u0y + sphi * ny;
+    const Lanes L = lanes_sqrt(C * C + mu2 * S * S);
+    const Lanes Ls = L * s;
+    const Lanes vc = C * p + S * qm;
+    const auto along = vc > 0.0;
+    const Lanes num = along ? Ls + vc : mu2 * schi * schi;
+    const Lanes den = along ? Ls : Ls * (Ls - vc);
+    const Lanes ld = L * den;
+    const Lanes inv3 = 1.0 / (ld * root);
+    const Lanes inv = inv3 * root;
+    const Lanes a = wgt * c2 * inv * den;
     g1 += a * C;
     g2 += a * S;
-    const double one_plus = num * inv * L;
+    const Lanes one_plus = num * inv * L;
     h += wgt * c2 * one_plus * (s + L * (root + (1.0 / 3.0) * c2 * ld * inv3));
   });
   const double k = 2.0 / kPi;
-  return {k * g1, k * mu * g2, k * h};
+  return {k * (g1[0] + g1[1]), k * mu * (g2[0] + g2[1]), k * (h[0] + h[1])};
 }
 
 // Hertz and punch: the ICR reduction (docs/exact-law.md §1; the punch's chord factor in
