@@ -10,8 +10,7 @@ namespace frictionlab::friction {
 // differently.
 PatchAngle::PatchAngle(double radians) : radians_(radians), cos_(std::cos(radians)), sin_(std::sin(radians)) {}
 
-double PatchAngle::radians() const {
-  if (!direction_) return radians_;
+double PatchAngle::direction_radians() const {
   double psi = std::atan2(sin_, cos_);
   if (psi < 0.0) psi += std::numbers::pi;  // the major axis is a line: psi in [0, pi)
   if (psi >= std::numbers::pi) psi -= std::numbers::pi;

@@ -38,11 +38,13 @@ class PatchAngle {
   [[nodiscard]] constexpr double sin() const { return sin_; }
   /// The angle, rad: as given when made from an angle; for a direction, std::atan2(s, c) folded to
   /// [0, pi) (the major axis is a line: psi and psi + pi are the same patch).
-  [[nodiscard]] double radians() const;
+  [[nodiscard]] double radians() const { return direction_ ? direction_radians() : radians_; }
   /// True when made by from_direction().
   [[nodiscard]] constexpr bool is_direction() const { return direction_; }
 
  private:
+  [[nodiscard]] double direction_radians() const;
+
   double radians_ = 0.0;  ///< the angle, when made from one
   double cos_ = 1.0;
   double sin_ = 0.0;
