@@ -2,9 +2,33 @@
 
 #include <cmath>
 #include <limits>
-#include <numbers>
+#include <utility>
 
 namespace frictionlab::dynamics {
+namespace {
+
+// The major axis in the slip frame (e1, e2) as the direction (cos psi, sin psi) the law reads: no
+// angle is formed (friction/patch_angle.h). The major axis is a line: the direction is the one
+// with psi in [0, pi), sin psi > 0 or sin psi = 0 < cos psi (the fold psi -> psi + pi). The dot
+// products are scaled to unit length: e1 leaves the contact plane by the rounding of the slip,
+// which is large against U when the contact point's velocity is mostly normal (a landing, a deep
+// trial stage), and |(cos, sin)| then falls short of 1 by more than rounding.
+friction::PatchAngle patch_direction(const Eigen::Vector3d& major, const Eigen::Vector3d& e1,
+                                     const Eigen::Vector3d& e2) {
+  double c = major.dot(e1);
+  double s = major.dot(e2);
+  if (s < 0.0 || (s == 0.0 && c < 0.0)) {
+    c = -c;
+    s = -s;
+  }
+  const double norm = std::sqrt(c * c + s * s);
+  if (norm >= std::numeric_limits<double>::min()) return friction::PatchAngle::from_direction(c / norm, s / norm + 0.0);
+  // e1 (nearly) along the normal, or not finite: the angle of the direction, atan2 as it was
+  // (0 for a zero vector; NaN is refused by the law's input check).
+  return friction::PatchAngle(friction::PatchAngle::from_direction(c, s).radians());
+}
+
+}  // namespace
 
 BodyOnPlane::BodyOnPlane(Body body, const PlaneContact& plane, const friction::FrictionLaw& law)
     : body_(std::move(body)),
@@ -50,13 +74,10 @@ void BodyOnPlane::contact_state(const StateVector& x, ContactState& c) const {
     c.U = 0.0;
     c.e1 = patch.major;
   }
-  if (patch.circle) {
-    c.psi = 0.0;
+  if (patch.circle || c.U == 0.0) {
+    c.psi = friction::PatchAngle();  // psi = 0: a circle has no axis; at zero slip e1 is the major axis
   } else {
-    const Eigen::Vector3d e2 = c.gamma.cross(c.e1);
-    c.psi = std::atan2(patch.major.dot(e2), patch.major.dot(c.e1));
-    if (c.psi < 0.0) c.psi += std::numbers::pi;  // the major axis is a line: psi in [0, pi)
-    if (c.psi >= std::numbers::pi) c.psi -= std::numbers::pi;
+    c.psi = patch_direction(patch.major, c.e1, c.gamma.cross(c.e1));
   }
 
   c.force = c.N * c.gamma;

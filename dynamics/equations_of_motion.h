@@ -12,7 +12,9 @@
 // e1 is the direction of u - (u.gamma) gamma (the slip of the contact point), U its magnitude;
 // e2 = gamma x e1; Omega = omega . gamma. When U = 0, e1 is the major axis of the patch (psi = 0),
 // so the choice is deterministic. r and the patch come from dynamics/contact_geometry.h; psi is the
-// angle from e1 to the major axis, CCW about gamma, in [0, pi).
+// angle from e1 to the major axis, CCW about gamma, in [0, pi): the law gets it as the direction
+// (cos psi, sin psi) = (major.e1, major.e2), scaled to unit length; no angle is formed
+// (friction/patch_angle.h), psi.radians() forms it for the outputs.
 //
 // gamma is renormalised where it is read (forces, contact point, eps'); eq. (4) itself moves the
 // stored gamma, which conserves |gamma| exactly, so its drift is only the integrator's error.
@@ -48,7 +50,8 @@ struct ContactState {
   bool in_contact = false; ///< eps < 0
   double a = 0.0;          ///< major semi-axis of the patch, m (0 out of contact)
   double b = 0.0;          ///< minor semi-axis, m
-  double psi = 0.0;        ///< angle from e1 to the major axis, rad, [0, pi)
+  friction::PatchAngle psi;  ///< from e1 to the major axis: its direction (cos, sin) as the law
+                             ///< reads it; psi.radians() in [0, pi), formed only when asked for
   friction::FrictionForces friction;  ///< F1, F2 (N), M (N m); zero out of contact
   Eigen::Vector3d force;   ///< total contact force N gamma + F, body frame, N
   Eigen::Vector3d torque;  ///< contact torque about the centre of mass, N m

@@ -31,10 +31,10 @@ PoleWatch::Point PoleWatch::patch_point(double U, double Omega, double a, double
 }
 
 PoleWatch::Point PoleWatch::point(const ContactState& c) const {
-  if (c.in_contact && c.a > 0.0) return patch_point(c.U, c.Omega, c.a, c.b, c.psi);
+  if (c.in_contact && c.a > 0.0) return patch_point(c.U, c.Omega, c.a, c.b, c.psi.radians());
   Point p;
   p.sign = c.Omega < 0.0 ? -1.0 : 1.0;
-  p.psi = c.psi;
+  p.psi = c.psi.radians();
   // Out of contact the patch has shrunk to nothing: s = inf, mu the limit of b/a.
   const double r_max = std::max(c.point.R_meridian, c.point.R_parallel);
   const double r_min = std::min(c.point.R_meridian, c.point.R_parallel);

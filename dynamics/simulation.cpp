@@ -35,7 +35,7 @@ std::string describe_friction(const BodyOnPlane& sys, const StateVector& x) {
            " N, F2 = " + message_number(c.friction.F2) + " N, M = " + message_number(c.friction.M) +
            " N m at U = " + message_number(c.U) + " m/s, Omega = " + message_number(c.Omega) +
            " 1/s, a = " + message_number(c.a) + " m, b = " + message_number(c.b) +
-           " m, psi = " + message_number(c.psi) + ", N = " + message_number(c.N) + " N";
+           " m, psi = " + message_number(c.psi.radians()) + ", N = " + message_number(c.N) + " N";
   } catch (const std::exception& e) {
     return e.what();
   }

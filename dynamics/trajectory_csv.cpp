@@ -22,7 +22,7 @@ std::array<double, kTrajectoryColumns.size()> trajectory_row(const Sample& s) {
           v[0], v[1], v[2],
           height(s.x), c.N, c.U, c.Omega,
           c.friction.F1, c.friction.F2, c.friction.M,
-          c.a, c.b, c.psi,
+          c.a, c.b, c.psi.radians(),
           s.energy, s.kinetic, slide_work(s.x), spin_work(s.x),
           c.in_contact ? 1.0 : 0.0};
 }

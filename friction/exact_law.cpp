@@ -1292,9 +1292,8 @@ FrictionForces ExactLaw::do_evaluate(const ContactInput& in) const {
   const double sign = in.Omega > 0.0 ? 1.0 : -1.0;
   const double s = slip_ratio(in.U, in.a, in.Omega);  // may be +inf: fast-slip branch
   // A circle is symmetric under rotation: psi = 0 makes F2 = 0 exact.
-  const double psi = (mu == 1.0) ? 0.0 : in.psi;
-  const double cpsi = std::cos(psi);
-  const double spsi = std::sin(psi);
+  const double cpsi = (mu == 1.0) ? 1.0 : in.psi.cos();
+  const double spsi = (mu == 1.0) ? 0.0 : in.psi.sin();
   const double e2 = (1.0 - mu) * (1.0 + mu);
 
   if (s > kFastSlipRatio) {

@@ -22,6 +22,26 @@ void require_finite(const char* name, double value) {
   if (!std::isfinite(value)) throw invalid_input(name, value, "it must be a finite number");
 }
 
+// An angle must be finite; a direction (cos psi, sin psi) finite and unit to
+// PatchAngle::kUnitTolerance (dot products of unit vectors are unit to a few roundings).
+void require_valid_orientation(const PatchAngle& psi) {
+  if (!psi.is_direction()) {
+    require_finite("psi", psi.radians());
+    return;
+  }
+  const double c = psi.cos();
+  const double s = psi.sin();
+  const auto invalid = [&](const std::string& rule) {
+    return support::InvalidValue("friction input psi", "(cos, sin) = (" + shortest(c) + ", " + shortest(s) + ")", rule);
+  };
+  if (!std::isfinite(c) || !std::isfinite(s)) throw invalid("the direction of the major axis must be finite");
+  const double excess = std::abs((c * c + s * s) - 1.0);
+  if (!(excess <= PatchAngle::kUnitTolerance)) {
+    throw invalid("the direction of the major axis must be a unit vector, |cos^2 + sin^2 - 1| <= " +
+                  shortest(PatchAngle::kUnitTolerance) + " (here " + shortest(excess) + ")");
+  }
+}
+
 }  // namespace
 
 PoleDenominators FrictionLaw::pole_denominators(const ContactInput& /*in*/) const {
@@ -34,7 +54,7 @@ void validate(const ContactInput& in) {
   require_finite("Omega", in.Omega);
   require_finite("a", in.a);
   require_finite("b", in.b);
-  require_finite("psi", in.psi);
+  require_valid_orientation(in.psi);
   require_finite("N", in.N);
   require_finite("k", in.k);
   if (in.U < 0.0) throw invalid_input("U", in.U, "the slip speed must be >= 0 m/s (e1 points along the slip)");

@@ -11,6 +11,8 @@
 #include <string_view>
 #include <utility>
 
+#include "friction/patch_angle.h"
+
 namespace frictionlab::friction {
 
 /// The state of one contact, as a friction law sees it. SI units.
@@ -19,7 +21,8 @@ struct ContactInput {
   double Omega = 0.0;  ///< spin about the upward normal, 1/s; finite, either sign
   double a = 1.0;      ///< major semi-axis of the patch, m; finite, > 0
   double b = 1.0;      ///< minor semi-axis of the patch, m; finite, 0 < b <= a
-  double psi = 0.0;    ///< angle from e1 to the major axis, rad, CCW about gamma; finite
+  PatchAngle psi;      ///< angle from e1 to the major axis, rad, CCW about gamma, with its cosine and
+                       ///< sine (friction/patch_angle.h): an angle, finite, or a direction, unit
   double N = 0.0;      ///< normal force, N; finite, >= 0
   double k = 0.0;      ///< Coulomb friction coefficient, dimensionless; finite, >= 0
 };

@@ -12,14 +12,14 @@ namespace frictionlab::friction {
 
 using support::shortest;
 
-PadePrintedCoefficients pade_printed_coefficients(double mu, double psi) {
+PadePrintedCoefficients pade_printed_coefficients(double mu, const PatchAngle& psi) {
   constexpr double pi = std::numbers::pi;
   const double mu2 = mu * mu;
   const double mu_q = std::sqrt(std::sqrt(mu));  // mu^(1/4)
   const double mu_34 = mu_q * mu_q * mu_q;       // mu^(3/4)
   // cos 2psi and sin 2psi from cos psi and sin psi: 2 psi itself may overflow.
-  const double c = std::cos(psi);
-  const double s = std::sin(psi);
+  const double c = psi.cos();
+  const double s = psi.sin();
   const double c2 = (c - s) * (c + s);
   const double s2 = 2.0 * s * c;
   const double d3 = (1.0 - mu2) * c * c + mu2;   // Eq. (9), delta_3
@@ -113,7 +113,7 @@ FrictionForces PadePrintedLaw::do_evaluate(const ContactInput& in) const {
     const double value = pole[0] == 'M' ? out.M : pole[1] == '1' ? out.F1 : out.F2;
     throw std::invalid_argument(std::string(name()) + " is undefined at U = " + shortest(in.U) + " m/s, Omega = " +
                                 shortest(in.Omega) + " 1/s, a = " + shortest(in.a) + " m, b = " + shortest(in.b) +
-                                " m, psi = " + shortest(in.psi) + ": the denominator of " + pole +
+                                " m, psi = " + shortest(in.psi.radians()) + ": the denominator of " + pole +
                                 " in eq. (8) vanishes there (a pole; " + pole + " = " + shortest(value) + ")");
   }
   return out;

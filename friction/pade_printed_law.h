@@ -55,8 +55,9 @@ struct PadePrintedCoefficients {
   double m0_over_alpha_f0;  ///< M0 / (alpha F0) = (3 pi/16) mu^(1/2)
 };
 
-/// Eq. (9) for axis ratio mu in (0, 1] and angle psi (rad). a4 is ±inf where d6 = 0.
-[[nodiscard]] PadePrintedCoefficients pade_printed_coefficients(double mu, double psi);
+/// Eq. (9) for axis ratio mu in (0, 1] and orientation psi (an angle in rad converts; only its
+/// cosine and sine are read). a4 is ±inf where d6 = 0.
+[[nodiscard]] PadePrintedCoefficients pade_printed_coefficients(double mu, const PatchAngle& psi);
 
 /// Eqs. (8)-(9) as printed, alpha = the major semi-axis.
 class PadePrintedLaw final : public FrictionLaw {

@@ -39,11 +39,11 @@ PatchEllipticIntegrals patch_elliptic_integrals(double mu) {
   return out;
 }
 
-PadeReconstructedCoefficients pade_reconstructed_coefficients(double mu, double psi) {
+PadeReconstructedCoefficients pade_reconstructed_coefficients(double mu, const PatchAngle& psi) {
   const auto ell = patch_elliptic_integrals(mu);
   const double k2 = (1.0 - mu) * (1.0 + mu);
-  const double c = std::cos(psi);
-  const double s = std::sin(psi);
+  const double c = psi.cos();
+  const double s = psi.sin();
   const double cos2 = (c - s) * (c + s);
   const double sin2 = 2.0 * s * c;
   const double d3 = k2 * c * c + mu * mu;  // Eq. (9), delta_3 > 0

@@ -77,8 +77,9 @@ struct PadeReconstructedCoefficients {
   double m0_over_alpha_f0;  ///< M0 / (alpha F0) = (3/8) E(k)
 };
 
-/// The coefficients for axis ratio mu in (0, 1] and angle psi (rad).
-[[nodiscard]] PadeReconstructedCoefficients pade_reconstructed_coefficients(double mu, double psi);
+/// The coefficients for axis ratio mu in (0, 1] and orientation psi (an angle in rad converts; only
+/// its cosine and sine are read).
+[[nodiscard]] PadeReconstructedCoefficients pade_reconstructed_coefficients(double mu, const PatchAngle& psi);
 
 /// The forms (8) with coefficients matched to the exact law at slow and fast slip.
 class PadeReconstructedLaw final : public FrictionLaw {

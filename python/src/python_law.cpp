@@ -43,7 +43,7 @@ struct Callable {
 std::string contact_text(const friction::ContactInput& in) {
   std::ostringstream m;
   m.precision(17);
-  m << "U = " << in.U << ", Omega = " << in.Omega << ", a = " << in.a << ", b = " << in.b << ", psi = " << in.psi
+  m << "U = " << in.U << ", Omega = " << in.Omega << ", a = " << in.a << ", b = " << in.b << ", psi = " << in.psi.radians()
     << ", N = " << in.N << ", k = " << in.k;
   return m.str();
 }
@@ -63,7 +63,7 @@ class PythonLaw final : public friction::FrictionLaw {
     {
       const py::gil_scoped_acquire gil;
       try {
-        const py::tuple r = py::tuple(f_->f(in.U, in.Omega, in.a, in.b, in.psi, in.N, in.k));
+        const py::tuple r = py::tuple(f_->f(in.U, in.Omega, in.a, in.b, in.psi.radians(), in.N, in.k));
         if (r.size() != 3) {
           error = "law '" + name_ + "' returned " + std::to_string(r.size()) + " values: it must return (F1, F2, M)";
         } else {

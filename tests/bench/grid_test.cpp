@@ -88,7 +88,7 @@ TEST(Grid, ContactIsTheDimensionlessOne) {
   EXPECT_EQ(in.Omega, -1.0);
   EXPECT_EQ(in.a, 1.0);
   EXPECT_EQ(in.b, 0.4);
-  EXPECT_EQ(in.psi, 1.0);
+  EXPECT_EQ(in.psi.radians(), 1.0);
   EXPECT_EQ(in.N, 1.0);
   EXPECT_EQ(in.k, 1.0);
 }

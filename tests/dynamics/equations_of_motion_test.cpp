@@ -104,8 +104,13 @@ TEST(DynEquationsOfMotion, FrictionOpposesTheSlipAndActsAtTheContactPoint) {
     EXPECT_GT(std::abs(c.friction.F2), 1e-6 * c.N);  // the test law's F2 is exercised
     EXPECT_NEAR(F.dot(c.gamma), 0.0, 1e-12 * c.N);
     EXPECT_EIGEN_NEAR(c.torque, Eigen::Vector3d(c.point.r.cross(c.force) - c.friction.M * c.gamma), 1e-12);
-    EXPECT_GE(c.psi, 0.0);
-    EXPECT_LT(c.psi, std::numbers::pi);
+    EXPECT_GE(c.psi.radians(), 0.0);
+    EXPECT_LT(c.psi.radians(), std::numbers::pi);
+    // The law gets the major axis as a direction (no angle formed), unit to rounding, on the side
+    // sin psi >= 0 that psi in [0, pi) names.
+    EXPECT_TRUE(c.psi.is_direction());
+    EXPECT_NEAR(std::hypot(c.psi.cos(), c.psi.sin()), 1.0, 1e-15);
+    EXPECT_GE(c.psi.sin(), 0.0);
     EXPECT_GE(c.a, c.b);
   }
 }
@@ -139,7 +144,8 @@ TEST(DynEquationsOfMotion, ZeroSlipTakesTheMajorAxisAsE1) {
   const StateVector x = make_state(-w.cross(cp.r), w, g, -1e-4);
   const ContactState c = sys.contact_state(x);
   EXPECT_EQ(c.U, 0.0);
-  EXPECT_EQ(c.psi, 0.0);
+  EXPECT_EQ(c.psi.radians(), 0.0);
+  EXPECT_NEAR(c.psi.cos(), 1.0, 1e-15);
   EXPECT_NEAR(c.Omega, 10.0, 1e-13);
   EXPECT_NEAR(c.e1.dot(g), 0.0, 1e-15);
 }
@@ -158,7 +164,9 @@ TEST(DynEquationsOfMotion, PsiIsTheAngleFromTheSlipToTheMajorAxisCounterClockwis
     const Eigen::Vector3d slip(0.0, std::cos(theta), std::sin(theta));
     const StateVector x = make_state(0.5 * slip, Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitX(), -1e-4);
     const ContactState c = sys.contact_state(x);
-    EXPECT_NEAR(c.psi, std::numbers::pi - theta, 1e-12) << "theta = " << theta;
+    EXPECT_NEAR(c.psi.radians(), std::numbers::pi - theta, 1e-12) << "theta = " << theta;
+    EXPECT_NEAR(c.psi.cos(), -std::cos(theta), 1e-15) << "theta = " << theta;
+    EXPECT_NEAR(c.psi.sin(), std::sin(theta), 1e-15) << "theta = " << theta;
     EXPECT_NEAR(c.a / c.b, 0.2 / 0.05, 1e-12);  // sqrt(R_parallel / R_meridian) = sqrt(a / (c^2/a))
   }
 }

@@ -16,9 +16,10 @@
 namespace frictionlab::friction {
 namespace {
 
-// A contact that slips and spins, with its pure-spin twin.
-constexpr ContactInput kMoving{0.03, -7.0, 0.004, 0.002, 0.4, 12.0, 0.3};
-constexpr ContactInput kSpin{0.0, 5.0, 0.004, 0.002, 0.4, 12.0, 0.3};
+// A contact that slips and spins, with its pure-spin twin (const, not constexpr: an angle's cosine and
+// sine are computed at run time, friction/patch_angle.h).
+const ContactInput kMoving{0.03, -7.0, 0.004, 0.002, 0.4, 12.0, 0.3};
+const ContactInput kSpin{0.0, 5.0, 0.004, 0.002, 0.4, 12.0, 0.3};
 
 void expect_same(const FrictionLaw& a, const FrictionLaw& b, const ContactInput& in) {
   const auto f = a.evaluate(in);

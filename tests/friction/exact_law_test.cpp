@@ -199,14 +199,14 @@ TEST(ExactLaw, SymmetriesInSpinAndOrientation) {
     EXPECT_EQ(g.M, -f.M);
     // psi -> psi + pi: nothing changes.
     ContactInput turned = in;
-    turned.psi = in.psi + kPi;
+    turned.psi = in.psi.radians() + kPi;
     const FrictionForces h = eval(turned);
     EXPECT_NEAR(h.F1, f.F1, kRoundingTol * kN);
     EXPECT_NEAR(h.F2, f.F2, kRoundingTol * kN);
     EXPECT_NEAR(h.M, f.M, kRoundingTol * kNa);
     // psi -> -psi: only F2 changes sign.
     ContactInput mirrored = in;
-    mirrored.psi = -in.psi;
+    mirrored.psi = -in.psi.radians();
     const FrictionForces m = eval(mirrored);
     EXPECT_NEAR(m.F1, f.F1, kRoundingTol * kN);
     EXPECT_NEAR(m.F2, -f.F2, kRoundingTol * kN);

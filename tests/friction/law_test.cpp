@@ -93,6 +93,57 @@ TEST(Validate, RejectsScalesOutsideTheDoubleRange) {
   EXPECT_EQ(rejection(with([](auto& c) { c.k = 1e-200; c.N = 1e-200; })), "");  // k N underflows: no friction
 }
 
+TEST(ContactInput, TakesThePatchAngleAsADouble) {
+  ContactInput in{1.0, 2.0, 1.0, 0.5, 0.3, 1.0, 0.1};
+  EXPECT_EQ(in.psi.radians(), 0.3);
+  in.psi = -0.7;
+  EXPECT_EQ(in.psi.radians(), -0.7);
+  EXPECT_FALSE(in.psi.is_direction());
+  EXPECT_EQ(ContactInput{}.psi.radians(), 0.0);
+}
+
+TEST(Validate, AcceptsADirectionUnitToRounding) {
+  ContactInput in{1.0, 1.0, 1.0, 0.5, 0.0, 1.0, 0.1};
+  for (const double theta : {0.0, 0.3, -2.0, 3.0}) {
+    in.psi = PatchAngle::from_direction(std::cos(theta), std::sin(theta));
+    EXPECT_EQ(rejection(in), "") << "theta = " << theta;
+  }
+  in.psi = PatchAngle::from_direction(0.6, -0.8);
+  EXPECT_EQ(rejection(in), "");
+  // |c^2 + s^2 - 1| = 8e-13 and 1.2e-12 about the tolerance 1e-12.
+  in.psi = PatchAngle::from_direction(1.0 + 4e-13, 0.0);
+  EXPECT_EQ(rejection(in), "");
+  in.psi = PatchAngle::from_direction(1.0 + 6e-13, 0.0);
+  EXPECT_NE(rejection(in), "");
+}
+
+TEST(Validate, RefusesADirectionThatIsNotUnitNamingItAndTheRule) {
+  ContactInput in{1.0, 1.0, 1.0, 0.5, 0.0, 1.0, 0.1};
+  in.psi = PatchAngle::from_direction(0.6, 0.81);
+  const std::string msg = rejection(in);
+  EXPECT_NE(msg.find("friction input psi = (cos, sin) = (0.6, 0.81) is invalid"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("|cos^2 + sin^2 - 1| <= 1e-12"), std::string::npos) << msg;
+  in.psi = PatchAngle::from_direction(0.0, 0.0);
+  EXPECT_NE(rejection(in).find("(cos, sin) = (0, 0) is invalid"), std::string::npos) << rejection(in);
+}
+
+TEST(Validate, RefusesANonFiniteDirection) {
+  ContactInput in{1.0, 1.0, 1.0, 0.5, 0.0, 1.0, 0.1};
+  in.psi = PatchAngle::from_direction(kNaN, 0.0);
+  EXPECT_NE(rejection(in).find("friction input psi = (cos, sin) = (nan, 0) is invalid: the direction of the major axis must be finite"),
+            std::string::npos)
+      << rejection(in);
+  in.psi = PatchAngle::from_direction(1.0, kInf);
+  EXPECT_NE(rejection(in).find("(cos, sin) = (1, inf) is invalid"), std::string::npos) << rejection(in);
+}
+
+TEST(Validate, RefusesANonFiniteAngle) {
+  ContactInput in{1.0, 1.0, 1.0, 0.5, 0.0, 1.0, 0.1};
+  in.psi = kInf;
+  EXPECT_NE(rejection(in).find("friction input psi = inf is invalid: it must be a finite number"), std::string::npos)
+      << rejection(in);
+}
+
 TEST(Registry, EveryListedLawIsMadeByItsNameAndValidatesInput) {
   const auto laws = list_laws();
   ASSERT_GE(laws.size(), 3u);
