@@ -1292,8 +1292,9 @@ FrictionForces ExactLaw::do_evaluate(const ContactInput& in) const {
   const double sign = in.Omega > 0.0 ? 1.0 : -1.0;
   const double s = slip_ratio(in.U, in.a, in.Omega);  // may be +inf: fast-slip branch
   // A circle is symmetric under rotation: psi = 0 makes F2 = 0 exact.
-  const double cpsi = (mu == 1.0) ? 1.0 : in.psi.cos();
-  const double spsi = (mu == 1.0) ? 0.0 : in.psi.sin();
+  const PatchAngle::CosSin axis = (mu == 1.0) ? PatchAngle::CosSin{1.0, 0.0} : in.psi.cos_sin();
+  const double cpsi = axis.c;
+  const double spsi = axis.s;
   const double e2 = (1.0 - mu) * (1.0 + mu);
 
   if (s > kFastSlipRatio) {

@@ -215,8 +215,9 @@ FrictionForces ExactReferenceLaw::do_evaluate(const ContactInput& in) const {
   pb.sigma = in.Omega > 0.0 ? 1.0 : -1.0;
   pb.mu = mu;
   pb.pressure = pressure_;
-  pb.cpsi = in.psi.cos();
-  pb.spsi = in.psi.sin();
+  const PatchAngle::CosSin axis = in.psi.cos_sin();
+  pb.cpsi = axis.c;
+  pb.spsi = axis.s;
   // ICR c = (0, sigma s) in the slip frame, c' = sigma s (sin psi, cos psi) in the ellipse frame.
   const double cx = pb.sigma * pb.s * pb.spsi;
   const double cy = pb.sigma * pb.s * pb.cpsi;

@@ -29,8 +29,7 @@ void require_valid_orientation(const PatchAngle& psi) {
     require_finite("psi", psi.radians());
     return;
   }
-  const double c = psi.cos();
-  const double s = psi.sin();
+  const auto [c, s] = psi.cos_sin();
   const auto invalid = [&](const std::string& rule) {
     return support::InvalidValue("friction input psi", "(cos, sin) = (" + shortest(c) + ", " + shortest(s) + ")", rule);
   };

@@ -18,8 +18,7 @@ PadePrintedCoefficients pade_printed_coefficients(double mu, const PatchAngle& p
   const double mu_q = std::sqrt(std::sqrt(mu));  // mu^(1/4)
   const double mu_34 = mu_q * mu_q * mu_q;       // mu^(3/4)
   // cos 2psi and sin 2psi from cos psi and sin psi: 2 psi itself may overflow.
-  const double c = psi.cos();
-  const double s = psi.sin();
+  const auto [c, s] = psi.cos_sin();
   const double c2 = (c - s) * (c + s);
   const double s2 = 2.0 * s * c;
   const double d3 = (1.0 - mu2) * c * c + mu2;   // Eq. (9), delta_3

@@ -42,8 +42,7 @@ PatchEllipticIntegrals patch_elliptic_integrals(double mu) {
 PadeReconstructedCoefficients pade_reconstructed_coefficients(double mu, const PatchAngle& psi) {
   const auto ell = patch_elliptic_integrals(mu);
   const double k2 = (1.0 - mu) * (1.0 + mu);
-  const double c = psi.cos();
-  const double s = psi.sin();
+  const auto [c, s] = psi.cos_sin();
   const double cos2 = (c - s) * (c + s);
   const double sin2 = 2.0 * s * c;
   const double d3 = k2 * c * c + mu * mu;  // Eq. (9), delta_3 > 0
