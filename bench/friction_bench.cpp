@@ -8,10 +8,10 @@
 //
 // One iteration = one evaluation, cycling through the set, so the reported time is the mean cost
 // per evaluation over the set. Ratios between laws are only meaningful within one run.
-// `BM_law/<spec>` evaluates from the patch angle psi, as a caller holding an angle does (the command
-// line, Python): forming cos psi and sin psi (friction::PatchAngle) is part of each evaluation, as
-// it was when every law took them itself. `BM_law_direction/<spec>` evaluates inputs whose
-// cosine and sine are already there, as the dynamics hands them over (the major axis's direction).
+// `BM_law/<spec>` evaluates inputs that carry the patch angle psi, as a caller holding an angle
+// does (the command line, Python): the law forms cos psi and sin psi (friction::PatchAngle::cos_sin)
+// in each evaluation, as it always did. `BM_law_direction/<spec>` evaluates the same contacts with
+// the major axis given as its direction (cos psi, sin psi), as the dynamics hands it over.
 
 #include <benchmark/benchmark.h>
 
@@ -62,25 +62,24 @@ MaxErrors max_errors(const friction::FrictionLaw& law, const friction::FrictionL
   return e;
 }
 
-// Registers BM_law/<spec> (from_angle: each evaluation forms the input's PatchAngle from the
-// angle) or BM_law_direction/<spec> (the inputs' cosine and sine already formed).
+// Registers BM_law/<spec> (the inputs as given: angles) or BM_law_direction/<spec> (the same
+// inputs with psi as the direction (cos psi, sin psi), formed here, before the timing).
 void register_timing(bool from_angle, const std::string& spec, bool slow, std::shared_ptr<friction::FrictionLaw> law,
-                     std::shared_ptr<const std::vector<friction::ContactInput>> set, MaxErrors err) {
-  auto angles = std::make_shared<std::vector<double>>();
-  for (const auto& in : *set) angles->push_back(in.psi.radians());
+                     const std::vector<friction::ContactInput>& inputs, MaxErrors err) {
+  auto set = std::make_shared<std::vector<friction::ContactInput>>(inputs);
+  if (!from_angle) {
+    for (auto& in : *set) {
+      const auto [c, s] = in.psi.cos_sin();
+      in.psi = friction::PatchAngle::from_direction(c, s);
+    }
+  }
   const std::string name = (from_angle ? "BM_law/" : "BM_law_direction/") + spec;
-  auto* b = benchmark::RegisterBenchmark(name.c_str(), [law, set, angles, err, from_angle](benchmark::State& state) {
+  auto* b = benchmark::RegisterBenchmark(name.c_str(), [law, set, err](benchmark::State& state) {
     std::size_t i = 0;
     const long long allocations_before = g_allocations.load();
     for (auto _ : state) {
       try {
-        if (from_angle) {
-          friction::ContactInput in = (*set)[i];
-          in.psi = (*angles)[i];
-          benchmark::DoNotOptimize(law->evaluate(in));
-        } else {
-          benchmark::DoNotOptimize(law->evaluate((*set)[i]));
-        }
+        benchmark::DoNotOptimize(law->evaluate((*set)[i]));
       } catch (const std::invalid_argument&) {  // a pole of the printed law: not a cost to time
       }
       if (++i == set->size()) i = 0;
@@ -99,11 +98,11 @@ void register_timing(bool from_angle, const std::string& spec, bool slow, std::s
 
 void register_law(const friction::LawInfo& info, const std::vector<friction::ContactInput>& full) {
   const bool slow = info.slow;
-  auto set = std::make_shared<const std::vector<friction::ContactInput>>(
+  const std::vector<friction::ContactInput> set(
       full.begin(), full.begin() + static_cast<std::ptrdiff_t>(slow ? kSlowLawSubset : full.size()));
   std::shared_ptr<friction::FrictionLaw> law = friction::make_law(info.spec);
   const auto reference = friction::make_reference_law();
-  const MaxErrors err = max_errors(*law, *reference, *set);
+  const MaxErrors err = max_errors(*law, *reference, set);
   register_timing(true, info.spec, slow, law, set, err);
   register_timing(false, info.spec, slow, law, set, err);
 }
