@@ -1039,6 +1039,34 @@ Result uniform_inside(double mu, double p, double q) {
   return {-k * g1, -k * mu * g2, k * h};
 }
 
+// The uniform window's integrand (below) at two nodes: sin chi and cos^2 chi in the lanes, each
+// weighted by wgt, added into g1, g2 (per cos^2 chi v/L) and h. The ICR's scaled direction c^ =
+// (p, q)/rho, u0 = -c^, n = J c^; qm = mu^2 q.
+struct UniformWindowIntegrand {
+  double rho, irho, u0x, u0y, nx, ny, mu2, p, qm, s;
+  void add(Lanes schi, Lanes c2, Lanes wgt, Lanes& g1, Lanes& g2, Lanes& h) const {
+    const Lanes sphi = schi * irho;
+    const Lanes root = lanes_sqrt((rho - schi) * (rho + schi));  // rho cos phi
+    const Lanes cphi = root * irho;
+    const Lanes C = cphi * u0x + sphi * nx;
+    const Lanes S = cphi * u0y + sphi * ny;
+    const Lanes L = lanes_sqrt(C * C + mu2 * S * S);
+    const Lanes Ls = L * s;
+    const Lanes vc = C * p + S * qm;
+    const auto along = vc > 0.0;
+    const Lanes num = along ? Ls + vc : mu2 * schi * schi;
+    const Lanes den = along ? Ls : Ls * (Ls - vc);
+    const Lanes ld = L * den;
+    const Lanes inv3 = 1.0 / (ld * root);  // one division per node for 1/(L den) and 1/root
+    const Lanes inv = inv3 * root;
+    const Lanes a = wgt * c2 * inv * den;  // cos^2 chi / L, weighted
+    g1 += a * C;
+    g2 += a * S;
+    const Lanes one_plus = num * inv * L;
+    h += wgt * c2 * one_plus * (s + L * (root + (1.0 / 3.0) * c2 * ld * inv3));
+  }
+};
+
 // Uniform pressure, ICR outside: the window of the ICR reduction (as window_integral, with the
 // chord factor sqrt(D), prefactor 2/pi and chord moment 1/3; docs/pressure-models.md §3) in the
 // variable chi of rho sin phi = sin chi, chi in [-pi/2, pi/2]: sqrt(D) = cos chi and
@@ -1107,11 +1135,10 @@ Result uniform_window(double mu, double p, double q, double rho, double s, bool&
   const double cd = step.c;
   const double sd = step.s;
   const double mu2 = mu * mu;
-  const double qm = mu2 * q;
-  const double irho = 1.0 / rho;
+  const UniformWindowIntegrand f{rho, 1.0 / rho, u0x, u0y, nx, ny, mu2, p, mu2 * q, s};
   // Two nodes at a time, j and j + 1 in the two lanes: (cos, sin) of j 2pi/n, rotated by
-  // 2 (2pi/n) per step; chi = -pi/2 + j 2 pi/n: sin chi = -cos, cos chi = sin. The lane past the
-  // last node (odd count) is dropped from the sums.
+  // 2 (2pi/n) per step; chi = -pi/2 + j 2 pi/n: sin chi = -cos, cos chi = sin. Past the last node
+  // (an odd count) the second lane repeats the first at weight 0 (a finite integrand: it adds 0).
   const double c2d = cd * cd - sd * sd;
   const double s2d = 2.0 * sd * cd;
   Lanes cj = {cd, c2d};
@@ -1120,34 +1147,18 @@ Result uniform_window(double mu, double p, double q, double rho, double s, bool&
   Lanes g2 = {0.0, 0.0};
   Lanes h = {0.0, 0.0};
   for (int j = 1; j < half; j += 2) {
-    const Lanes schi = -cj;
-    const Lanes c2 = sj * sj;
+    Lanes schi = -cj;
+    Lanes c2 = sj * sj;
+    Lanes wgt = {1.0, 1.0};
+    if (j + 1 == half) {
+      schi[1] = schi[0];
+      c2[1] = c2[0];
+      wgt[1] = 0.0;
+    }
     const Lanes c_next = cj * c2d - sj * s2d;
     sj = sj * c2d + cj * s2d;
     cj = c_next;
-    const Lanes sphi = schi * irho;
-    const Lanes root = lanes_sqrt((rho - schi) * (rho + schi));  // rho cos phi
-    const Lanes cphi = root * irho;
-    const Lanes C = cphi * u0x + sphi * nx;
-    const Lanes S = cphi * u0y + sphi * ny;
-    const Lanes L = lanes_sqrt(C * C + mu2 * S * S);
-    const Lanes Ls = L * s;
-    const Lanes vc = C * p + S * qm;
-    const auto along = vc > 0.0;
-    const Lanes num = along ? Ls + vc : mu2 * schi * schi;
-    const Lanes den = along ? Ls : Ls * (Ls - vc);
-    const Lanes ld = L * den;
-    const Lanes inv3 = 1.0 / (ld * root);  // one division per node for 1/(L den) and 1/root
-    const Lanes inv = inv3 * root;
-    const Lanes a = c2 * inv * den;  // cos^2 chi / L
-    const Lanes one_plus = num * inv * L;
-    const Lanes hj = c2 * one_plus * (s + L * (root + (1.0 / 3.0) * c2 * ld * inv3));
-    const Lanes keep = {1.0, j + 1 < half ? 1.0 : 0.0};
-    const auto in = keep > 0.0;
-    const Lanes zero = {0.0, 0.0};
-    g1 += in ? a * C : zero;
-    g2 += in ? a * S : zero;
-    h += in ? hj : zero;
+    f.add(schi, c2, wgt, g1, g2, h);
   }
   const double k = (2.0 / kPi) * (2.0 * kPi / n);
   return {k * (g1[0] + g1[1]), k * mu * (g2[0] + g2[1]), k * (h[0] + h[1])};
@@ -1189,33 +1200,11 @@ Result uniform_window_graded(double mu, double p, double q, double rho, double s
   Panels panels;
   build_panels(1.0, sing, false, panels, true);
   const double mu2 = mu * mu;
-  const double qm = mu2 * q;
-  const double irho = 1.0 / rho;
+  const UniformWindowIntegrand f{rho, 1.0 / rho, u0x, u0y, nx, ny, mu2, p, mu2 * q, s};
   Lanes g1 = {0.0, 0.0};
   Lanes g2 = {0.0, 0.0};
   Lanes h = {0.0, 0.0};
-  for_each_node_pair(panels, [&](Lanes cchi, Lanes schi, Lanes wgt) {
-    const Lanes c2 = cchi * cchi;
-    const Lanes sphi = schi * irho;
-    const Lanes root = lanes_sqrt((rho - schi) * (rho + schi));  // rho cos phi
-    const Lanes cphi = root * irho;
-    const Lanes C = cphi * u0x + sphi * nx;
-    const Lanes S = cphi * u0y + sphi * ny;
-    const Lanes L = lanes_sqrt(C * C + mu2 * S * S);
-    const Lanes Ls = L * s;
-    const Lanes vc = C * p + S * qm;
-    const auto along = vc > 0.0;
-    const Lanes num = along ? Ls + vc : mu2 * schi * schi;
-    const Lanes den = along ? Ls : Ls * (Ls - vc);
-    const Lanes ld = L * den;
-    const Lanes inv3 = 1.0 / (ld * root);
-    const Lanes inv = inv3 * root;
-    const Lanes a = wgt * c2 * inv * den;
-    g1 += a * C;
-    g2 += a * S;
-    const Lanes one_plus = num * inv * L;
-    h += wgt * c2 * one_plus * (s + L * (root + (1.0 / 3.0) * c2 * ld * inv3));
-  });
+  for_each_node_pair(panels, [&](Lanes cchi, Lanes schi, Lanes wgt) { f.add(schi, cchi * cchi, wgt, g1, g2, h); });
   const double k = 2.0 / kPi;
   return {k * (g1[0] + g1[1]), k * mu * (g2[0] + g2[1]), k * (h[0] + h[1])};
 }
