@@ -512,6 +512,29 @@ Result gap_integral(double mu, double e2, double p, double q, double rho) {
   return {-k * (g1[0] + g1[1]), -k * (g2[0] + g2[1]), k * (h[0] + h[1])};
 }
 
+// A window direction e = cos phi u0 + sin phi n (two in the lanes) in the normalised ellipse frame:
+// (C, S), L = |(C, mu S)|, and 1 + d.c^ = num/den (d = v/|v|, c^ = c'/|c'|) without
+// cancellation: as (Ls + v.c')/(Ls) where v.c' > 0, else as (d x c^)^2/(1 - d.c^), using
+// Lagrange's identity (Ls)^2 (d x c^)^2 = (v x c')^2 = cross2 = mu^2 rho^2 sin^2 phi. (Ls - v.c'
+// alone cancels to nothing where d is nearly along c^, which a slit (mu ~ 1e-9) sees at O(1)
+// angles.) qm = mu^2 q: v.c' = C p + S qm.
+struct WindowDirection {
+  Lanes C, S, L, num, den;
+};
+WindowDirection window_direction(Lanes cphi, Lanes sphi, double u0x, double u0y, double nx, double ny, double mu2,
+                                 double p, double qm, double s, Lanes cross2) {
+  WindowDirection d;
+  d.C = cphi * u0x + sphi * nx;
+  d.S = cphi * u0y + sphi * ny;
+  d.L = lanes_sqrt(d.C * d.C + mu2 * d.S * d.S);
+  const Lanes Ls = d.L * s;
+  const Lanes vc = d.C * p + d.S * qm;
+  const auto along = vc > 0.0;
+  d.num = along ? Ls + vc : cross2;
+  d.den = along ? Ls : Ls * (Ls - vc);
+  return d;
+}
+
 // ICR outside: the window of directions that hit the patch,
 // e(phi) = -cos phi c^ + sin phi n, |phi| < asin(1/rho), oriented from the ICR towards the patch.
 // The moment uses rho . (w/|w| + c'/|c'|) in place of rho . w/|w| (the same integral, since the
@@ -535,18 +558,7 @@ Result window_integral(double mu, double e2, double p, double q, double rho, dou
   Lanes g2 = {0.0, 0.0};
   Lanes h = {0.0, 0.0};
   for_each_node_pair(panels, [&](Lanes cphi, Lanes sphi, Lanes w) {
-    const Lanes C = cphi * u0x + sphi * nx;
-    const Lanes S = cphi * u0y + sphi * ny;
-    const Lanes L = lanes_sqrt(C * C + mu2 * S * S);
-    // 1 + d.c^ (d = v/|v|, c^ = c'/|c'|) without cancellation: as (Ls + v.c')/(Ls) where
-    // v.c' > 0, else as (d x c^)^2/(1 - d.c^), using Lagrange's identity
-    // (Ls)^2 (d x c^)^2 = (v x c')^2 = mu^2 rho^2 sin^2 phi. (Ls - v.c' alone cancels to nothing
-    // where d is nearly along c^, which a slit (mu ~ 1e-9) sees at O(1) angles.)
-    const Lanes Ls = L * s;
-    const Lanes vc = C * p + S * qm;
-    const auto along = vc > 0.0;
-    const Lanes num = along ? Ls + vc : mr2 * sphi * sphi;
-    const Lanes den = along ? Ls : Ls * (Ls - vc);
+    const auto [C, S, L, num, den] = window_direction(cphi, sphi, u0x, u0y, nx, ny, mu2, p, qm, s, mr2 * sphi * sphi);
     const Lanes inv = 1.0 / (L * den);  // one division per node
     const Lanes iL = inv * den;
     const Lanes D = 1.0 - rho2 * sphi * sphi;
@@ -1048,14 +1060,7 @@ struct UniformWindowIntegrand {
     const Lanes sphi = schi * irho;
     const Lanes root = lanes_sqrt((rho - schi) * (rho + schi));  // rho cos phi
     const Lanes cphi = root * irho;
-    const Lanes C = cphi * u0x + sphi * nx;
-    const Lanes S = cphi * u0y + sphi * ny;
-    const Lanes L = lanes_sqrt(C * C + mu2 * S * S);
-    const Lanes Ls = L * s;
-    const Lanes vc = C * p + S * qm;
-    const auto along = vc > 0.0;
-    const Lanes num = along ? Ls + vc : mu2 * schi * schi;
-    const Lanes den = along ? Ls : Ls * (Ls - vc);
+    const auto [C, S, L, num, den] = window_direction(cphi, sphi, u0x, u0y, nx, ny, mu2, p, qm, s, mu2 * schi * schi);
     const Lanes ld = L * den;
     const Lanes inv3 = 1.0 / (ld * root);  // one division per node for 1/(L den) and 1/root
     const Lanes inv = inv3 * root;
