@@ -424,24 +424,9 @@ void build_panels(double T, const Singularities& sing, bool with_poly, Panels& o
   }
 }
 
-// Calls f(cos phi, sin phi, weight dphi) on every node of the panels.
-template <class F>
-void for_each_node(const Panels& panels, F&& f) {
-  for (int k = 0; k < panels.count; ++k) {
-    const Panel& pn = panels.p[static_cast<std::size_t>(k)];
-    const double m = 0.5 * (pn.x0 + pn.x1);
-    const double h = 0.5 * (pn.x1 - pn.x0);
-    const GaussRule& g = *pn.rule;
-    for (int i = 0; i < g.n; ++i) {
-      const double t = m + h * g.x[static_cast<std::size_t>(i)];
-      const double iq = 1.0 / (1.0 + t * t);
-      f((1.0 - t * t) * iq, 2.0 * t * iq, 2.0 * h * g.w[static_cast<std::size_t>(i)] * iq);
-    }
-  }
-}
-
-// The same, two nodes at a time in Lanes; a panel with an odd node count repeats its last node
-// at weight 0 (a finite integrand there: it adds exactly 0).
+// Calls f(cos phi, sin phi, weight dphi) on the panels' nodes two at a time, in Lanes, in order; a
+// panel with an odd node count repeats its last node at weight 0 (a finite integrand there: it
+// adds exactly 0; a Gauss weight is never 0, so a caller may also skip such a lane).
 template <class F>
 void for_each_node_pair(const Panels& panels, F&& f) {
   for (int k = 0; k < panels.count; ++k) {
@@ -817,8 +802,10 @@ Result uniform_rim(double mu, double c1, double c2) {
       sing.z[static_cast<std::size_t>(sing.count++)] = weierstrass_image(trig[static_cast<std::size_t>(k)], cm, sm);
     }
     build_panels(T, sing, false, panels);
-    for_each_node(panels, [&](double cphi, double sphi, double wgt) {
-      integrand.add(cm * cphi - sm * sphi, sm * cphi + cm * sphi, wgt, acc);
+    for_each_node_pair(panels, [&](Lanes cphi, Lanes sphi, Lanes wgt) {  // one node at a time, in order
+      for (int l = 0; l < 2 && wgt[l] != 0.0; ++l) {
+        integrand.add(cm * cphi[l] - sm * sphi[l], sm * cphi[l] + cm * sphi[l], wgt[l], acc);
+      }
     });
     }
   }
