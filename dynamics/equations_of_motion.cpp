@@ -74,10 +74,11 @@ void BodyOnPlane::contact_state(const StateVector& x, ContactState& c) const {
     c.U = 0.0;
     c.e1 = patch.major;
   }
+  const Eigen::Vector3d e2 = c.gamma.cross(c.e1);
   if (patch.circle || c.U == 0.0) {
     c.psi = friction::PatchAngle();  // psi = 0: a circle has no axis; at zero slip e1 is the major axis
   } else {
-    c.psi = patch_direction(patch.major, c.e1, c.gamma.cross(c.e1));
+    c.psi = patch_direction(patch.major, c.e1, e2);
   }
 
   c.force = c.N * c.gamma;
@@ -87,7 +88,6 @@ void BodyOnPlane::contact_state(const StateVector& x, ContactState& c) const {
     c.a = patch.a;
     c.b = patch.b;
     c.friction = law_.evaluate({c.U, c.Omega, c.a, c.b, c.psi, c.N, plane_.k});
-    const Eigen::Vector3d e2 = c.gamma.cross(c.e1);
     const Eigen::Vector3d F = -c.friction.F1 * c.e1 - c.friction.F2 * e2;  // Eq. (7)
     c.force += F;
     c.torque += c.point.r.cross(F) - c.friction.M * c.gamma;
