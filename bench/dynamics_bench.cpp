@@ -1,13 +1,15 @@
 // Cost of the body's right-hand side (dynamics/equations_of_motion.h) per call, and of its parts,
 // on the states of the printed egg's case a (docs/model.md §6): the first 2 s of the run, sampled
-// every 1e-3 s (the egg spins on its lower pole and rises; in contact throughout).
+// every 1e-3 s (the egg spins on its lower pole and rises, bouncing: 1023 of the 2001 states are
+// in contact).
 //
 //   build/bench/dynamics_bench
 //   build/bench/dynamics_bench --benchmark_filter='BM_rhs/exact'
 //
 // One iteration = one call, cycling through the 2001 states, so the reported time is the mean cost
 // per call over the set. BM_rhs/<law> is the whole right-hand side (contact state, the law,
-// derivatives); BM_contact_point the contact point alone; BM_law_at_contact/<law> the law alone on
+// derivatives); BM_rhs_hertz/<law> the same under `[contact] patch = "hertz"` (lambda matched on
+// the lower pole, docs/contact-models.md); BM_contact_point the contact point alone; BM_law_at_contact/<law> the law alone on
 // the contact inputs of those states. Ratios are only meaningful within one run.
 
 #include <benchmark/benchmark.h>
@@ -19,6 +21,8 @@
 
 #include "dynamics/body.h"
 #include "dynamics/equations_of_motion.h"
+#include "dynamics/hertz_ellipse.h"
+#include "dynamics/patch_model.h"
 #include "dynamics/simulation.h"
 #include "friction/registry.h"
 
@@ -59,9 +63,9 @@ const std::vector<StateVector>& case_a_states() {
   return states;
 }
 
-void BM_rhs(benchmark::State& state, const std::string& spec) {
+void time_rhs(benchmark::State& state, const std::string& spec, const dynamics::PlaneContact& plane) {
   const auto law = friction::make_law(spec);
-  const dynamics::BodyOnPlane sys(egg_printed(), kPlane, *law);
+  const dynamics::BodyOnPlane sys(egg_printed(), plane, *law);
   const auto& xs = case_a_states();
   StateVector d;
   std::size_t i = 0;
@@ -69,6 +73,34 @@ void BM_rhs(benchmark::State& state, const std::string& spec) {
     sys(0.0, xs[i], d);
     benchmark::DoNotOptimize(d);
     if (++i == xs.size()) i = 0;
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+
+void BM_rhs(benchmark::State& state, const std::string& spec) { time_rhs(state, spec, kPlane); }
+
+// The same plane under Hertz's theory, its modulus matched to kPlane's lambda on the lower pole.
+dynamics::PlaneContact hertz_plane() {
+  dynamics::PlaneContact plane = kPlane;
+  dynamics::PatchModelSpec spec;
+  spec.patch = "hertz";
+  spec.lambda = kPlane.lambda;
+  dynamics::apply_patch_model(spec, egg_printed(), plane);
+  return plane;
+}
+
+void BM_rhs_hertz(benchmark::State& state, const std::string& spec) { time_rhs(state, spec, hertz_plane()); }
+
+// Hertz's ellipse alone (dynamics/hertz_ellipse.h) at the principal radii of those states.
+void BM_hertz_ellipse(benchmark::State& state) {
+  const auto law = friction::make_law("exact");
+  const dynamics::BodyOnPlane sys(egg_printed(), kPlane, *law);
+  std::vector<dynamics::ContactPoint> points;
+  for (const auto& x : case_a_states()) points.push_back(sys.geometry().contact_point(dynamics::vertical(x).normalized()));
+  std::size_t i = 0;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(dynamics::hertz_ellipse(points[i].R_meridian, points[i].R_parallel));
+    if (++i == points.size()) i = 0;
   }
   state.SetItemsProcessed(state.iterations());
 }
@@ -108,7 +140,9 @@ const bool registered = [] {
     benchmark::RegisterBenchmark((std::string("BM_law_at_contact/") + spec).c_str(), BM_law_at_contact,
                                  std::string(spec));
   }
+  benchmark::RegisterBenchmark("BM_rhs_hertz/exact", BM_rhs_hertz, std::string("exact"));
   benchmark::RegisterBenchmark("BM_contact_point", BM_contact_point);
+  benchmark::RegisterBenchmark("BM_hertz_ellipse", BM_hertz_ellipse);
   return true;
 }();
 

@@ -22,7 +22,8 @@ constexpr int kMaxNewtonIterations = 100;
 
 }  // namespace
 
-ContactGeometry::ContactGeometry(const Profile& profile, double com) : profile_(profile), com_(com) {
+ContactGeometry::ContactGeometry(const Profile& profile, double com)
+    : profile_(profile), third_derivative_(profile.chi2().derivative().derivative().derivative()), com_(com) {
   guess_.resize(2 * kGuessTableSize);
   const double mid = 0.5 * (profile_.z_lo() + profile_.z_hi());
   for (int i = 0; i < kGuessTableSize; ++i) {
@@ -94,6 +95,17 @@ ContactPoint ContactGeometry::contact_point(const Eigen::Vector3d& gamma) const 
   c.R_parallel = q;
   c.R_meridian = s2 * s / (2.0 * std::abs(2.0 * j.value * j.d2 - j.d1 * j.d1));
   return c;
+}
+
+RadiiSlope ContactGeometry::radii_slope(const ContactPoint& c) const {
+  const PolynomialJet j = profile_.chi2().jet(c.z);
+  const double s2 = 4.0 * j.value + j.d1 * j.d1;
+  const double s = std::sqrt(s2);
+  const double G = 2.0 * j.value * j.d2 - j.d1 * j.d1;  // < 0
+  const double ds = j.d1 * (2.0 + j.d2) / s;
+  const double dG = 2.0 * j.value * third_derivative_(c.z);
+  const double dz = s2 * s / (2.0 * G);  // dz/dgamma3
+  return {-s2 * (3.0 * ds * G - s * dG) / (2.0 * G * G) * dz, 0.5 * ds * dz};
 }
 
 PatchShape ContactGeometry::patch(const ContactPoint& c, const Eigen::Vector3d& gamma, double depth) {

@@ -33,6 +33,12 @@ struct ContactPoint {
   double R_parallel = 0.0;     ///< principal radius of curvature along the parallel, m
 };
 
+/// How the principal radii change with the orientation: d/dgamma3 of each, m.
+struct RadiiSlope {
+  double meridian = 0.0;
+  double parallel = 0.0;
+};
+
 /// The contact ellipse (section hypothesis).
 struct PatchShape {
   double a = 0.0;              ///< major semi-axis, m
@@ -54,6 +60,12 @@ class ContactGeometry {
   /// Exact poles for gamma3 = ±1 (gamma1 = gamma2 = 0). No allocation.
   [[nodiscard]] ContactPoint contact_point(const Eigen::Vector3d& gamma) const;
 
+  /// d/dgamma3 of the principal radii at the contact point `c` (from contact_point), analytic:
+  /// with s' = P'(2 + P'')/s and G' = 2 P P''' along z, and dz/dgamma3 = s^3/(2G),
+  ///     dR_parallel/dz = s'/2,   dR_meridian/dz = -s^2 (3 s' G - s G')/(2 G^2).
+  /// Finite through the poles. No allocation.
+  [[nodiscard]] RadiiSlope radii_slope(const ContactPoint& c) const;
+
   /// The patch at penetration depth `depth` = |eps| (m, >= 0) for the contact point `c` of `gamma`.
   [[nodiscard]] static PatchShape patch(const ContactPoint& c, const Eigen::Vector3d& gamma, double depth);
 
@@ -65,6 +77,7 @@ class ContactGeometry {
 
  private:
   Profile profile_;
+  Polynomial third_derivative_;  ///< P'''
   double com_;
   [[nodiscard]] double solve(double gamma3, double z_start, double step_tolerance) const;
 

@@ -5,7 +5,8 @@
 // pressed on a flat by the approach delta (m), touches it over an ellipse whose major axis lies
 // along the direction of R_major (the smaller curvature). With the relative curvatures
 // A = 1/(2 R_major), B = 1/(2 R_minor), mu = b/a, e^2 = 1 - mu^2, K = K(e), E = E(e) and
-// D = (K - E)/e^2 (Boost.Math ellint_1, ellint_d), Hertz's equations (Johnson, Contact Mechanics,
+// D = (K - E)/e^2 (Carlson's forms with the complementary modulus mu, Boost.Math ellint_rd:
+// D = R_D(0, mu^2, 1)/3, K - D = mu^2 R_D(0, 1, mu^2)/3, DLMF 19.25.1), Hertz's equations (Johnson, Contact Mechanics,
 // 1985, §4.2, eqs. (4.36)-(4.39); Hertz 1882) are
 //     A = (p0/E*) (b/a^2) D,     B = (p0/E*) (b/a^2) (K - D)/mu^2,     delta = (p0/E*) b K,
 //     N = (2/3) pi a b p0,
@@ -27,12 +28,17 @@ struct HertzEllipse {
   double stiffness_per_modulus = 0.0;  ///< S = N/(E* delta^1.5), m^(1/2)
   double K = 0.0;               ///< K(e) at the solution
   double D = 0.0;               ///< D(e) = (K - E)/e^2 at the solution
+  /// d ln S / d ln R of the first and of the second radius passed to hertz_ellipse (the other one
+  /// fixed): how the stiffness changes with the curvatures. Their sum is 1/2 (S ~ sqrt(R)); each
+  /// is 1/4 at equal radii.
+  double dlnS_dlnR1 = 0.25;
+  double dlnS_dlnR2 = 0.25;
 };
 
 /// Solves Hertz's eccentricity equation for the principal radii (m, finite, > 0, any order; the
-/// major axis lies along the larger). Throws std::invalid_argument for radii that are not finite
-/// and positive. Never allocates.
-[[nodiscard]] HertzEllipse hertz_ellipse(double R_major, double R_minor);
+/// major axis lies along the larger), mu to rounding. Throws std::invalid_argument for radii that
+/// are not finite and positive. Never allocates.
+[[nodiscard]] HertzEllipse hertz_ellipse(double R1, double R2);
 
 /// The curvature ratio B/A = (K - D)/(mu^2 D) that Hertz's ellipse with axis ratio mu in (0, 1]
 /// needs (the left side of the eccentricity equation).

@@ -14,6 +14,12 @@ namespace {
 // sees gamma3); exactly the pole for g3 = ±1.
 Eigen::Vector3d vertical_at(double g3) { return {std::sqrt((1.0 - g3) * (1.0 + g3)), 0.0, g3}; }
 
+// lambda' = lambda d ln S/d gamma3, through the two radii.
+double stiffness_slope_at(const ContactGeometry& geometry, const ContactPoint& c, const HertzEllipse& e, double lambda) {
+  const RadiiSlope r = geometry.radii_slope(c);
+  return lambda * (e.dlnS_dlnR1 * r.meridian / c.R_meridian + e.dlnS_dlnR2 * r.parallel / c.R_parallel);
+}
+
 }  // namespace
 
 HertzNormalContact::HertzNormalContact(double E_star) : E_star_(E_star) {
@@ -30,9 +36,9 @@ double HertzNormalContact::stiffness(const ContactGeometry& geometry, double gam
 }
 
 double HertzNormalContact::stiffness_slope(const ContactGeometry& geometry, double gamma3) const {
-  const double hi = std::min(gamma3 + kStiffnessSlopeStep, 1.0);
-  const double lo = std::max(gamma3 - kStiffnessSlopeStep, -1.0);
-  return (stiffness(geometry, hi) - stiffness(geometry, lo)) / (hi - lo);
+  const ContactPoint c = geometry.contact_point(vertical_at(std::clamp(gamma3, -1.0, 1.0)));
+  const HertzEllipse e = hertz_ellipse(c.R_meridian, c.R_parallel);
+  return stiffness_slope_at(geometry, c, e, E_star_ * e.stiffness_per_modulus);
 }
 
 double HertzNormalContact::energy(const ContactPoint& c, double eps) const {
@@ -58,7 +64,7 @@ HertzContact HertzNormalContact::evaluate(const ContactGeometry& geometry, const
   // gamma x e3 = (gamma2, -gamma1, 0): zero at the poles, where lambda' needs no value.
   const Eigen::Vector3d gxe3(gamma.y(), -gamma.x(), 0.0);
   if (gxe3.squaredNorm() > 0.0)
-    h.torque = 0.4 * delta * d15 * stiffness_slope(geometry, gamma.z()) * gxe3;
+    h.torque = 0.4 * delta * d15 * stiffness_slope_at(geometry, c, e, h.stiffness) * gxe3;
   return h;
 }
 

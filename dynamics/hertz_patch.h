@@ -15,8 +15,9 @@
 //     T = (2/5) delta^(5/2) lambda'(gamma3) gamma x e3          (body frame, about the centre of mass)
 // (gamma' = gamma x omega, so dV/dt at fixed delta = -T . omega). With T the normal contact is
 // conservative and E' = -(F1 U + M Omega) holds as in docs/model.md §5. T is of relative order
-// delta/R beside the torque of N (the order of the terms Hertz's theory neglects); lambda' is
-// a central difference in gamma3 (step kStiffnessSlopeStep).
+// delta/R beside the torque of N (the order of the terms Hertz's theory neglects). lambda' is
+// analytic: lambda (d ln S/d ln R_meridian R_meridian'/R_meridian + the same for R_parallel), with
+// the elasticities of dynamics/hertz_ellipse.h and the radii's slopes of ContactGeometry::radii_slope.
 
 #include <Eigen/Core>
 
@@ -35,10 +36,6 @@ struct HertzContact {
 
 class HertzNormalContact {
  public:
-  /// Step of the central difference for lambda'(gamma3). Truncation ~h^2 lambda''' / 6 and
-  /// rounding ~1e-16 lambda/h: ~1e-10 relative on the egg; T itself is ~1e-4 of the torque of N.
-  static constexpr double kStiffnessSlopeStep = 1e-5;
-
   /// `E_star`: effective modulus, Pa, finite, > 0 (dynamics/hertz_ellipse.h: effective_modulus).
   explicit HertzNormalContact(double E_star);
 
@@ -53,7 +50,7 @@ class HertzNormalContact {
   [[nodiscard]] double stiffness(const ContactPoint& c) const;
   /// lambda where the upward vertical has third component gamma3 in [-1, 1] (N/m^1.5).
   [[nodiscard]] double stiffness(const ContactGeometry& geometry, double gamma3) const;
-  /// d lambda / d gamma3 (N/m^1.5), central difference (one-sided within a step of a pole).
+  /// d lambda / d gamma3 (N/m^1.5), analytic (finite at the poles).
   [[nodiscard]] double stiffness_slope(const ContactGeometry& geometry, double gamma3) const;
 
   [[nodiscard]] double modulus() const { return E_star_; }

@@ -78,6 +78,47 @@ TEST(DynContactGeometry, SpheroidMatchesClosedForm) {
   }
 }
 
+// dR/dgamma3 against the spheroid's closed form above: D^2 = a^2 + (c^2 - a^2) g3^2, so
+// D' = (c^2 - a^2) g3/D, dR_parallel/dg3 = -a^2 D'/D^2, dR_meridian/dg3 = -3 a^2 c^2 D'/D^4.
+TEST(DynContactGeometry, RadiiSlopesMatchTheSpheroidsClosedForm) {
+  for (const auto& [a, c] : {std::pair{0.2, 0.05}, std::pair{0.05, 0.2}}) {
+    const ContactGeometry geo(Profile::spheroid(a, c), 0.0);
+    const double scale = 3.0 * std::pow(std::max(a, c) / std::min(a, c), 3) * std::max(a, c);  // bounds |R'|
+    for (const auto& g : orientations()) {
+      const double g3 = g.z();
+      const double D = std::sqrt(a * a + (c * c - a * a) * g3 * g3);
+      const double dD = (c * c - a * a) * g3 / D;
+      const RadiiSlope s = geo.radii_slope(geo.contact_point(g));
+      EXPECT_NEAR(s.parallel, -a * a * dD / (D * D), kGeomRelTol * scale) << "g3 = " << g3;
+      EXPECT_NEAR(s.meridian, -3.0 * a * a * c * c * dD / (D * D * D * D), kGeomRelTol * scale) << "g3 = " << g3;
+    }
+  }
+}
+
+TEST(DynContactGeometry, ASpheresRadiiDoNotChangeWithTheOrientation) {
+  const ContactGeometry geo(Profile::sphere(0.1), 0.0);
+  for (const auto& g : orientations()) {
+    const RadiiSlope s = geo.radii_slope(geo.contact_point(g));
+    EXPECT_EQ(s.parallel, 0.0);
+    EXPECT_EQ(s.meridian, 0.0);
+  }
+}
+
+// On the egg (no closed form): central differences of the radii in gamma3, step 1e-6
+// (truncation ~1e-12 of the third derivative; rounding ~1e-16 R / 1e-6 = 1e-10 R).
+TEST(DynContactGeometry, RadiiSlopesMatchCentralDifferencesOnTheEgg) {
+  const ContactGeometry geo(Profile::paper_egg(), 0.05);
+  const auto at = [&](double g3) { return geo.contact_point({std::sqrt((1.0 - g3) * (1.0 + g3)), 0.0, g3}); };
+  for (const double g3 : {-0.999, -0.9, -0.5, -0.1, 0.0, 0.2, 0.6, 0.97, 0.999}) {
+    const double h = 1e-6;
+    const ContactPoint lo = at(g3 - h), hi = at(g3 + h), c = at(g3);
+    const RadiiSlope s = geo.radii_slope(c);
+    const double tol = 1e-8 * std::max(c.R_meridian, c.R_parallel);
+    EXPECT_NEAR(s.meridian, (hi.R_meridian - lo.R_meridian) / (2.0 * h), tol) << "g3 = " << g3;
+    EXPECT_NEAR(s.parallel, (hi.R_parallel - lo.R_parallel) / (2.0 * h), tol) << "g3 = " << g3;
+  }
+}
+
 TEST(DynContactGeometry, EggContactPointHasOutwardNormalMinusGamma) {
   const Profile egg = Profile::paper_egg();
   const double com = 0.07;

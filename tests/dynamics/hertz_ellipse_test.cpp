@@ -11,6 +11,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <random>
 #include <stdexcept>
 #include <string>
 
@@ -68,6 +69,53 @@ TEST(DynHertzEllipse, SolvesTheEccentricityEquationOverSixDecades) {
     EXPECT_NEAR(ratio_by_quadrature(h.mu), rho, 1e-10 * rho) << "rho = " << rho;
     // The order of the radii does not matter.
     EXPECT_EQ(hertz_ellipse(1.0, rho).mu, h.mu);
+  }
+}
+
+// The solver returns the root to rounding: the curvature ratio B/A falls strictly with mu, so
+// moving mu by 16 ulps either way brackets the requested ratio. Log-uniform ratios from the circle
+// to 1e14 (the guess table and beyond it).
+TEST(DynHertzEllipse, SolvesTheEccentricityEquationToRounding) {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(-12.0, 14.0);
+  for (int i = 0; i < 4000; ++i) {
+    const double rho = 1.0 + std::pow(10.0, u(rng));
+    const HertzEllipse h = hertz_ellipse(rho, 1.0);
+    const double step = 16.0 * std::numeric_limits<double>::epsilon() * h.mu;
+    if (h.mu == 1.0) {
+      EXPECT_LE(rho - 1.0, 2e-12) << "rho = " << rho;
+      continue;
+    }
+    EXPECT_GT(hertz_curvature_ratio(h.mu - step), rho) << "rho - 1 = " << rho - 1.0;
+    EXPECT_LT(hertz_curvature_ratio(std::min(h.mu + step, 1.0)), rho) << "rho - 1 = " << rho - 1.0;
+  }
+}
+
+// d ln S / d ln R of each radius against central differences of S itself (step 1e-5 in ln R:
+// truncation ~1e-11, rounding ~1e-16/1e-5).
+TEST(DynHertzEllipse, StiffnessElasticitiesMatchCentralDifferences) {
+  const double h = 1e-5;
+  const auto lnS = [](double R1, double R2) { return std::log(hertz_ellipse(R1, R2).stiffness_per_modulus); };
+  for (const auto& [R1, R2] : {std::pair{2.0, 0.5}, std::pair{0.5, 2.0}, std::pair{0.3, 0.27}, std::pair{10.0, 0.01},
+                               std::pair{1.0, 1.1}, std::pair{1e4, 1.0}, std::pair{1.0, 3e7}}) {
+    const HertzEllipse e = hertz_ellipse(R1, R2);
+    const double d1 = (lnS(R1 * std::exp(h), R2) - lnS(R1 * std::exp(-h), R2)) / (2.0 * h);
+    const double d2 = (lnS(R1, R2 * std::exp(h)) - lnS(R1, R2 * std::exp(-h))) / (2.0 * h);
+    EXPECT_NEAR(e.dlnS_dlnR1, d1, 1e-9) << R1 << " " << R2;
+    EXPECT_NEAR(e.dlnS_dlnR2, d2, 1e-9) << R1 << " " << R2;
+  }
+}
+
+// S is symmetric in the two radii and homogeneous of degree 1/2 (S ~ sqrt(R)), so at equal radii
+// each elasticity is 1/4; near equal radii they tend to it continuously.
+TEST(DynHertzEllipse, StiffnessElasticitiesAreAQuarterEachAtTheCircle) {
+  const HertzEllipse c = hertz_ellipse(0.3, 0.3);
+  EXPECT_NEAR(c.dlnS_dlnR1, 0.25, 1e-15);
+  EXPECT_NEAR(c.dlnS_dlnR2, 0.25, 1e-15);
+  for (const double x : {1e-3, 1e-6, 1e-9}) {
+    const HertzEllipse e = hertz_ellipse(1.0 + x, 1.0);
+    EXPECT_NEAR(e.dlnS_dlnR1, 0.25, x) << x;
+    EXPECT_NEAR(e.dlnS_dlnR2, 0.25, x) << x;
   }
 }
 

@@ -125,6 +125,27 @@ TEST(DynHertzPatch, NormalForceAndTorqueDeriveFromThePotential) {
   }
 }
 
+// lambda'(gamma3) against a central difference of lambda itself on the egg (step 1e-5: truncation
+// ~1e-10 relative); one-sided at the poles.
+TEST(DynHertzPatch, StiffnessSlopeMatchesDifferencesOfTheStiffness) {
+  const Body body = egg_body("egg-printed");
+  const ContactGeometry geometry(body.profile, body.com);
+  const HertzNormalContact model(kEStar);
+  const double h = 1e-5;
+  for (const double g3 : {-0.9999, -0.8, -0.3, 0.0, 0.4, 0.9, 0.99, 0.9999}) {
+    const double expected = (model.stiffness(geometry, g3 + h) - model.stiffness(geometry, g3 - h)) / (2.0 * h);
+    EXPECT_NEAR(model.stiffness_slope(geometry, g3), expected, 1e-8 * model.stiffness(geometry, g3)) << "g3 = " << g3;
+  }
+  for (const double g3 : {1.0, -1.0}) {
+    const double in = g3 > 0.0 ? -h : h;  // into [-1, 1]
+    const auto lambda = [&](double x) { return model.stiffness(geometry, x); };
+    // One-sided, second order: truncation ~h^2 lambda'''/3.
+    const double expected = (-3.0 * lambda(g3) + 4.0 * lambda(g3 + in) - lambda(g3 + 2.0 * in)) / (2.0 * in);
+    EXPECT_NEAR(model.stiffness_slope(geometry, g3), expected, 1e-7 * lambda(g3)) << "g3 = " << g3;
+    EXPECT_GT(std::abs(expected), 1e-2 * lambda(g3)) << "the test needs a slope at the pole";
+  }
+}
+
 TEST(DynHertzPatch, MatchedModulusGivesTheStiffnessAtTheReferenceOrientation) {
   const Body body = egg_body("egg-printed");
   const ContactGeometry geometry(body.profile, body.com);
