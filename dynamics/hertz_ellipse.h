@@ -6,15 +6,16 @@
 // along the direction of R_major (the smaller curvature). With the relative curvatures
 // A = 1/(2 R_major), B = 1/(2 R_minor), mu = b/a, e^2 = 1 - mu^2, K = K(e), E = E(e) and
 // D = (K - E)/e^2 (Carlson's forms with the complementary modulus mu, Boost.Math ellint_rd:
-// D = R_D(0, mu^2, 1)/3, K - D = mu^2 R_D(0, 1, mu^2)/3, DLMF 19.25.1), Hertz's equations (Johnson, Contact Mechanics,
-// 1985, §4.2, eqs. (4.36)-(4.39); Hertz 1882) are
+// D = R_D(0, mu^2, 1)/3, K - D = mu^2 R_D(0, 1, mu^2)/3, DLMF 19.25.1), Hertz's equations
+// (Hertz 1882; Johnson, Contact Mechanics, 1985, §4.2 — docs/contact-models.md gives the sources
+// and why no equation numbers) are
 //     A = (p0/E*) (b/a^2) D,     B = (p0/E*) (b/a^2) (K - D)/mu^2,     delta = (p0/E*) b K,
 //     N = (2/3) pi a b p0,
 // so that (exactly, no cancellation as e -> 0)
 //     B/A = R_major/R_minor = (K - D)/(mu^2 D)          (the eccentricity equation, solved for mu)
 //     a^2 = 2 R_major delta D/K,   b = mu a,   N = (2 pi/3) E* delta a / K = E* S delta^(3/2),
 // S = (2 pi/3) sqrt(2 R_major D/K) / K (m^(1/2)). A sphere (mu = 1, D/K = 1/2) gives a^2 = R delta
-// and N = (4/3) E* sqrt(R) delta^(3/2) (Johnson eqs. (4.22)-(4.23)).
+// and N = (4/3) E* sqrt(R) delta^(3/2) (Johnson §4.2).
 
 namespace frictionlab::dynamics {
 
@@ -44,8 +45,8 @@ struct HertzEllipse {
 /// needs (the left side of the eccentricity equation).
 [[nodiscard]] double hertz_curvature_ratio(double mu);
 
-/// The effective modulus 1/E* = (1 - nu1^2)/E1 + (1 - nu2^2)/E2 (Pa; Johnson §4.2, eq. (4.22)'s
-/// definition of E*). E2 = inf is a rigid plane. Throws std::invalid_argument naming the scenario
+/// The effective modulus 1/E* = (1 - nu1^2)/E1 + (1 - nu2^2)/E2 (Pa; Johnson §4.2's definition
+/// of E*). E2 = inf is a rigid plane. Throws std::invalid_argument naming the scenario
 /// key (contact.E1, contact.nu1, ...) for E <= 0 or not a number, and nu outside (-1, 0.5].
 [[nodiscard]] double effective_modulus(double E1, double nu1, double E2, double nu2);
 

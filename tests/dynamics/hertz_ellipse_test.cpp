@@ -120,7 +120,7 @@ TEST(DynHertzEllipse, StiffnessElasticitiesAreAQuarterEachAtTheCircle) {
 }
 
 // Hertz's relations between the curvatures, the approach, the load and the ellipse hold at the
-// computed a, b, N (Johnson 1985, §4.2, eqs. (4.36)-(4.39)), with K, E by quadrature.
+// computed a, b, N (Johnson 1985, §4.2; docs/contact-models.md §2), with K, E by quadrature.
 TEST(DynHertzEllipse, HertzsRelationsHoldAtTheComputedEllipse) {
   const double E_star = 1.1e11, delta = 2e-5;
   for (const auto& [R_major, R_minor] : {std::pair{2.0, 0.5}, std::pair{0.3, 0.29}, std::pair{10.0, 0.01}}) {
