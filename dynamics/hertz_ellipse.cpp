@@ -137,6 +137,13 @@ const std::vector<double>& guess_table() {
   return table;
 }
 
+// Equal radii: the circle, mu = 1 exactly.
+Root circle() {
+  const Integrals I = integrals(1.0);
+  const Slopes S = slopes(1.0, I);
+  return {1.0, I, S, log_slope(1.0, I, S)};
+}
+
 Root solve(double rho) {
   const double t = std::log(rho);
   if (t < kTableEnd) {
@@ -166,13 +173,7 @@ HertzEllipse hertz_ellipse(double R1, double R2) {
     throw std::invalid_argument("hertz_ellipse: the principal radii must be finite and > 0 m");
   const double R_major = std::max(R1, R2);
   const double rho = R_major / std::min(R1, R2);  // B/A >= 1
-  Root r{1.0, integrals(1.0), {}, 0.0};
-  if (rho - 1.0 > kHertzCircleRelTol) {
-    r = solve(rho);
-  } else {
-    r.S = slopes(1.0, r.I);
-    r.log_slope = log_slope(1.0, r.I, r.S);
-  }
+  const Root r = rho - 1.0 > kHertzCircleRelTol ? solve(rho) : circle();
   HertzEllipse h;
   h.mu = r.mu;
   h.K = r.I.K;
