@@ -497,6 +497,17 @@ Result gap_integral(double mu, double e2, double p, double q, double rho) {
   return {-k * (g1[0] + g1[1]), -k * (g2[0] + g2[1]), k * (h[0] + h[1])};
 }
 
+// The frame of an ICR outside the patch at c' = (p, q), |c'| = rho, in the normalised ellipse
+// frame: the window's central direction u0 = -c^ (from the ICR towards the patch) and n = J c^.
+struct IcrFrame {
+  double u0x, u0y, nx, ny;
+};
+IcrFrame icr_frame(double p, double q, double rho) {
+  const double cx = p / rho;
+  const double cy = q / rho;
+  return {-cx, -cy, -cy, cx};
+}
+
 // A window direction e = cos phi u0 + sin phi n (two in the lanes) in the normalised ellipse frame:
 // (C, S), L = |(C, mu S)|, and 1 + d.c^ = num/den (d = v/|v|, c^ = c'/|c'|) without
 // cancellation: as (Ls + v.c')/(Ls) where v.c' > 0, else as (d x c^)^2/(1 - d.c^), using
@@ -526,12 +537,7 @@ WindowDirection window_direction(Lanes cphi, Lanes sphi, double u0x, double u0y,
 // pressure's centroid is the centre), which removes a cancellation of O(s) terms to O(1/s).
 template <bool kPunch>
 Result window_integral(double mu, double e2, double p, double q, double rho, double s) {
-  const double cx = p / rho;
-  const double cy = q / rho;
-  const double u0x = -cx;
-  const double u0y = -cy;
-  const double nx = -cy;
-  const double ny = cx;
+  const auto [u0x, u0y, nx, ny] = icr_frame(p, q, rho);
   const double T = window_half_width(rho);  // tan(asin(1/rho) / 2)
   Panels panels;
   build_panels(T, singularities(u0x, u0y, mu, std::sqrt(e2)), true, panels);
@@ -1087,12 +1093,7 @@ constexpr int kWindowGrowth = 2;
 constexpr int kWindowMinHalf = 4;  // n >= 8, i.e. 3 evaluations
 constexpr int kWindowMaxNodes = 2 * RimSteps::kMaxHalf;
 Result uniform_window(double mu, double p, double q, double rho, double s, bool& done) {
-  const double cx = p / rho;
-  const double cy = q / rho;
-  const double u0x = -cx;
-  const double u0y = -cy;
-  const double nx = -cy;
-  const double ny = cx;
+  const auto [u0x, u0y, nx, ny] = icr_frame(p, q, rho);
   // cosh d of the nearest singularity: rho for rho cos phi; for L, with
   // w = rho sin phi* = rho (sin x + i mu cos x)/e, cosh |Im asin w| = (|w + 1| + |w - 1|)/2.
   double cosh_d = rho;
@@ -1166,12 +1167,7 @@ Result uniform_window(double mu, double p, double q, double rho, double s, bool&
 // and their reciprocals (chi and pi - chi).
 Result uniform_window_graded(double mu, double p, double q, double rho, double s) {
   using Complex = std::complex<double>;
-  const double cx = p / rho;
-  const double cy = q / rho;
-  const double u0x = -cx;
-  const double u0y = -cy;
-  const double nx = -cy;
-  const double ny = cx;
+  const auto [u0x, u0y, nx, ny] = icr_frame(p, q, rho);
   Singularities sing;
   sing.z[0] = {0.0, kWeierstrassPoleMargin};
   sing.z[1] = {1.0 / rho, std::sqrt((rho - 1.0) * (rho + 1.0)) / rho};
