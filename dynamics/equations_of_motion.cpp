@@ -1,8 +1,11 @@
 #include "dynamics/equations_of_motion.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <utility>
+
+#include "friction/support/number_format.h"
 
 namespace frictionlab::dynamics {
 namespace {
@@ -108,6 +111,33 @@ void BodyOnPlane::derivatives(const StateVector& x, const ContactState& c, State
   height(dxdt) = c.u.dot(c.gamma);                                                      // Eq. (5)
   slide_work(dxdt) = c.friction.F1 * c.U;
   spin_work(dxdt) = c.friction.M * c.Omega;
+}
+
+PoleWatch::Point BodyOnPlane::pole_point(const ContactState& c) {
+  if (c.in_contact && c.a > 0.0) return PoleWatch::patch_point(c.U, c.Omega, c.a, c.b, c.psi.radians());
+  PoleWatch::Point p;
+  p.sign = c.Omega < 0.0 ? -1.0 : 1.0;
+  p.psi = c.psi.radians();
+  // Out of contact the patch has shrunk to nothing: s = inf, mu the limit of b/a.
+  const double r_max = std::max(c.point.R_meridian, c.point.R_parallel);
+  const double r_min = std::min(c.point.R_meridian, c.point.R_parallel);
+  p.mu = r_max > 0.0 ? std::sqrt(r_min / r_max) : 1.0;
+  p.t = 0.0;
+  return p;
+}
+
+std::string BodyOnPlane::describe_friction(const StateVector& x, const BodyMode& /*mode*/) const {
+  using support::message_number;
+  try {
+    const ContactState c = contact_state(x);
+    return "friction law '" + std::string(law_.name()) + "' gives F1 = " + message_number(c.friction.F1) +
+           " N, F2 = " + message_number(c.friction.F2) + " N, M = " + message_number(c.friction.M) +
+           " N m at U = " + message_number(c.U) + " m/s, Omega = " + message_number(c.Omega) +
+           " 1/s, a = " + message_number(c.a) + " m, b = " + message_number(c.b) +
+           " m, psi = " + message_number(c.psi.radians()) + ", N = " + message_number(c.N) + " N";
+  } catch (const std::exception& e) {
+    return e.what();
+  }
 }
 
 double BodyOnPlane::kinetic_energy(const StateVector& x) const {

@@ -28,11 +28,14 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>  // cross products
 #include <optional>
+#include <string>
 
 #include "dynamics/body.h"
 #include "dynamics/contact_geometry.h"
 #include "dynamics/hertz_contact.h"
 #include "dynamics/hertz_patch.h"
+#include "dynamics/observer.h"
+#include "dynamics/pole_watch.h"
 #include "dynamics/state.h"
 #include "friction/law.h"
 
@@ -57,11 +60,26 @@ struct ContactState {
   Eigen::Vector3d torque;  ///< contact torque about the centre of mass, N m
 };
 
+struct RunSummary;  // dynamics/simulation.h
+
+/// The body's discrete mode (dynamics/run_loop.h): none yet, the body's equations are the same
+/// throughout a run.
+struct BodyMode {};
+
 /// The right-hand side: a small const functor holding its parameters and the law chosen once.
 /// No heap allocation per call. Not copyable by accident of the law reference: the law must
-/// outlive it.
+/// outlive it. It is a model of the integration loop (dynamics/run_loop.h): the types and the
+/// members after "The model interface" below; its events are dynamics/simulation.h's.
 class BodyOnPlane {
  public:
+  // The model interface of dynamics/run_loop.h.
+  static constexpr int kSize = StateLayout::kSize;
+  using State = StateVector;
+  using Contact = ContactState;
+  using Mode = BodyMode;
+  using Summary = RunSummary;
+  class Monitor;  // the body's events, dynamics/simulation.cpp
+
   /// Throws std::invalid_argument for invalid plane parameters.
   BodyOnPlane(Body body, const PlaneContact& plane, const friction::FrictionLaw& law);
 
@@ -87,6 +105,20 @@ class BodyOnPlane {
   /// m v^2/2 + omega.J omega/2 (J).
   [[nodiscard]] double kinetic_energy(const StateVector& x) const;
 
+  // The model interface of dynamics/run_loop.h (the mode changes nothing yet).
+  void contact(const StateVector& x, const BodyMode& /*mode*/, ContactState& c) const { contact_state(x, c); }
+  void derivatives(const StateVector& x, const ContactState& c, const BodyMode& /*mode*/, StateVector& dxdt) const {
+    derivatives(x, c, dxdt);
+  }
+  [[nodiscard]] double energy(const StateVector& x, const BodyMode& /*mode*/) const { return energy(x); }
+  /// The shape coordinates of the contact for the watch of the law's poles (dynamics/pole_watch.h):
+  /// in contact from the patch; out of contact the patch has shrunk to nothing (s = inf) and b/a
+  /// is its limit as the depth goes to 0, sqrt(R_min/R_max) of the principal radii.
+  [[nodiscard]] static PoleWatch::Point pole_point(const ContactState& c);
+  /// The friction at a state, in one line (for failure messages only; never throws).
+  [[nodiscard]] std::string describe_friction(const StateVector& x, const BodyMode& mode) const;
+  [[nodiscard]] double friction_coefficient() const { return plane_.k; }
+
   [[nodiscard]] const Body& body() const { return body_; }
   [[nodiscard]] const PlaneContact& plane() const { return plane_; }
   [[nodiscard]] const friction::FrictionLaw& law() const { return law_; }
@@ -101,5 +133,9 @@ class BodyOnPlane {
   Eigen::Vector3d inertia_;      ///< (A, A, C)
   Eigen::Vector3d inv_inertia_;  ///< (1/A, 1/A, 1/C)
 };
+
+/// A sample and an observer of the body's runs (dynamics/observer.h).
+using Sample = SampleOf<BodyOnPlane>;
+using Observer = ObserverOf<BodyOnPlane>;
 
 }  // namespace frictionlab::dynamics

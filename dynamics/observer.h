@@ -1,21 +1,26 @@
 #pragma once
 // What a run reports while it goes: samples on the output grid (and at the end), and progress.
+// The same for every model (dynamics/run_loop.h); a model's observers see its own state, contact
+// and mode: ObserverOf<Model> receives SampleOf<Model>.
 
 #include <stdexcept>
 
-#include "dynamics/equations_of_motion.h"
-#include "dynamics/state.h"
-
 namespace frictionlab::dynamics {
 
-/// One output sample.
-struct Sample {
+/// One output sample of a model with these state, contact and mode types.
+template <class State, class Contact, class Mode>
+struct SampleT {
   double t = 0.0;             ///< s
-  const StateVector& x;       ///< the state (gamma as integrated, not renormalised)
-  const ContactState& contact;
+  const State& x;             ///< the state as integrated (the body's gamma not renormalised)
+  const Contact& contact;     ///< the contact quantities at x
   double energy = 0.0;        ///< total mechanical energy, J
   double kinetic = 0.0;       ///< kinetic energy, J
+  Mode mode{};                ///< the discrete mode at x (held components, stick)
 };
+
+/// The sample type of a model (dynamics/run_loop.h).
+template <class Model>
+using SampleOf = SampleT<typename Model::State, typename Model::Contact, typename Model::Mode>;
 
 /// Thrown by an observer whose output failed (a write or close error, a full disk): the run stops
 /// at once with reason "output-error", keeping the last good state.
@@ -37,12 +42,14 @@ enum class SampleAccuracy {
   interpolated  ///< the step's cubic Hermite interpolant: no RHS call, order 4 (for slow quantities)
 };
 
-class Observer {
+template <class SampleType>
+class ObserverT {
  public:
-  virtual ~Observer() = default;
+  using Sample = SampleType;
+  virtual ~ObserverT() = default;
   /// At t = 0, at every multiple of the output interval, and once at the final time. May throw
   /// OutputFailure or OutputLimitReached (the run stops; see above).
-  virtual void sample(const Sample& s) = 0;
+  virtual void sample(const SampleType& s) = 0;
   /// After every accepted step (cheap; for progress display).
   virtual void step(double /*t*/) {}
   /// What the observer needs of its samples, asked once at the start of a run. An observer that
@@ -50,5 +57,9 @@ class Observer {
   /// against thresholds far above 1e-5) may take interpolated samples, which cost nothing.
   [[nodiscard]] virtual SampleAccuracy sample_accuracy() const { return SampleAccuracy::method_step; }
 };
+
+/// The observer of a model's runs.
+template <class Model>
+using ObserverOf = ObserverT<SampleOf<Model>>;
 
 }  // namespace frictionlab::dynamics

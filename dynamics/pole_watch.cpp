@@ -30,19 +30,6 @@ PoleWatch::Point PoleWatch::patch_point(double U, double Omega, double a, double
   return p;
 }
 
-PoleWatch::Point PoleWatch::point(const ContactState& c) const {
-  if (c.in_contact && c.a > 0.0) return patch_point(c.U, c.Omega, c.a, c.b, c.psi.radians());
-  Point p;
-  p.sign = c.Omega < 0.0 ? -1.0 : 1.0;
-  p.psi = c.psi.radians();
-  // Out of contact the patch has shrunk to nothing: s = inf, mu the limit of b/a.
-  const double r_max = std::max(c.point.R_meridian, c.point.R_parallel);
-  const double r_min = std::min(c.point.R_meridian, c.point.R_parallel);
-  p.mu = r_max > 0.0 ? std::sqrt(r_min / r_max) : 1.0;
-  p.t = 0.0;
-  return p;
-}
-
 std::array<double, 3> PoleWatch::denominators(const Point& p) const {
   const double s = p.t > 1.0 / kMaxSlipRatio ? (1.0 - p.t) / p.t : kMaxSlipRatio;
   // a = 1 m and |Omega| = 1 1/s: U = s m/s gives the slip ratio s (only the shape matters).
@@ -50,20 +37,10 @@ std::array<double, 3> PoleWatch::denominators(const Point& p) const {
   return {d.F1, d.F2, d.M};
 }
 
-void PoleWatch::set_reference(const ContactState& c) {
-  if (!active_) return;
-  set_reference(point(c));
-}
-
 void PoleWatch::set_reference(const Point& p) {
   if (!active_) return;
   ref_ = p;
   ref_den_ = denominators(ref_);
-}
-
-int PoleWatch::crossing(const ContactState& c) const {
-  if (!active_) return -1;
-  return crossing(point(c));
 }
 
 int PoleWatch::crossing(const Point& p) const {

@@ -9,9 +9,10 @@
 // s = U/(a |Omega|), the axis ratio mu = b/a, the angle psi and the sign of Omega (the scaling
 // fact of docs/model.md). A state is mapped to the point (t, mu, psi) with t = 1/(1 + s) in [0, 1]:
 //   in contact    s from the patch (s = inf, t = 0, when Omega = 0);
-//   no contact    the patch has shrunk to nothing: s = inf (t = 0), mu from the principal radii
-//                 (the limit of b/a as the depth goes to 0), so that landing with slip and lifting
-//                 off with slip are watched like any other motion.
+//   no contact    the patch has shrunk to nothing: s = inf (t = 0), mu the limit of b/a as the
+//                 depth goes to 0, so that landing with slip and lifting off with slip are watched
+//                 like any other motion (each model maps its contact to a point: pole_point,
+//                 dynamics/run_loop.h).
 //
 // A denominator can change sign in two ways: through 0 (a pole: the output blows up) or through
 // infinity (e.g. the printed a4 = -8/(3 mu^(3/4) pi d6) when psi passes 0 or pi/2 and d6 changes
@@ -24,7 +25,6 @@
 
 #include <array>
 
-#include "dynamics/equations_of_motion.h"
 #include "friction/law.h"
 
 namespace frictionlab::dynamics {
@@ -44,7 +44,6 @@ class PoleWatch {
     double psi = 0.0;    ///< rad
     double sign = 1.0;   ///< sign of Omega (+1 when Omega = 0)
   };
-  [[nodiscard]] Point point(const ContactState& c) const;
   /// The point of a contact over a patch a >= b > 0 (a planar model's patch, dynamics/puck/).
   [[nodiscard]] static Point patch_point(double U, double Omega, double a, double b, double psi);
 
@@ -52,13 +51,11 @@ class PoleWatch {
   [[nodiscard]] std::array<double, 3> denominators(const Point& p) const;
 
   /// The reference: the last accepted state of the run.
-  void set_reference(const ContactState& c);
   void set_reference(const Point& p);
 
   /// Which denominator passes through 0 between the reference and `c`: 0 (F1), 1 (F2), 2 (M), or
   /// -1 for none. A reference exactly on a pole (a denominator = 0) lets nothing leave it. Cheap when no sign changes (one call of the law's pole_denominators); no
   /// allocation.
-  [[nodiscard]] int crossing(const ContactState& c) const;
   [[nodiscard]] int crossing(const Point& p) const;
 
   /// "F1", "F2", "M".

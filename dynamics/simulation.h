@@ -1,6 +1,8 @@
 #pragma once
-// One run: integrates the equations of motion (dynamics/equations_of_motion.h) with GSL odeiv2
-// from t = 0 to an event, reporting samples to an observer, and returns a summary.
+// One run of the body: integrates the equations of motion (dynamics/equations_of_motion.h) on the
+// integration loop every model shares (dynamics/run_loop.h) from t = 0 to an event, reporting
+// samples to an observer, and returns a summary. The loop owns the stepping, sampling and the
+// events every model has; the body adds lift-offs, landings, settling, rest, rolling and stagnation.
 //
 // Steps are free: each is the step GSL's error control chooses towards run.t_end (only the last is
 // cut to land on t_end exactly, and run.max_step caps them); samples on the output grid are taken
@@ -30,91 +32,26 @@
 // Events are checked between accepted steps. On every stop the last good state is kept, sampled
 // (unless the output failed) and returned.
 
-#include <atomic>
-#include <string>
-#include <string_view>
-#include <vector>
-
 #include "dynamics/body_scales.h"
 #include "dynamics/equations_of_motion.h"
-#include "dynamics/integrator_options.h"
 #include "dynamics/observer.h"
 #include "dynamics/rest_event.h"
+#include "dynamics/run_options.h"
+#include "dynamics/run_summary.h"
 #include "dynamics/settling.h"
 #include "dynamics/state.h"
-#include "dynamics/threshold.h"
 
 namespace frictionlab::dynamics {
 
-/// Default run.max_samples: 1e7 rows (~4.4 GB of trajectory.csv at ~440 bytes a row) is ten times
-/// what the paper's runs plan (t_end = 1000 s at output_dt = 1e-3 s).
-inline constexpr long kDefaultMaxSamples = 10'000'000;
-
-struct RunOptions {
-  double t_end = 1.0;       ///< s, > 0
-  double output_dt = 1e-3;  ///< s, > 0: the sample interval; t_end/output_dt <= max_samples
-  long max_samples = kDefaultMaxSamples;  ///< > 0: the most samples a run may plan
-  IntegratorOptions integrator;
-  RestThresholds rest;
-  SettleThresholds settle;
-  bool stop_when_rolling = true;  ///< stop with reason "rolling" (dynamics/rest_event.h)
-  /// >= 0 (0: never): accepted steps in a row in the stagnation region, in contact but not settled,
-  /// before the run stops with reason "stagnation". A bounce that merely passes through the region
-  /// (a vertical drop without slip or spin stays in it during every impact, where the friction is
-  /// 0) takes a few tens of steps per impact; the chatter of a discontinuous law at U = Omega = 0
-  /// takes ~1e6 steps per millisecond (steps of ~tolerance/(k g) s).
-  long max_stagnant_steps = 1000;
-  const std::atomic<bool>* cancel = nullptr;  ///< checked between steps; may be null
-
-  /// std::invalid_argument naming the run.* key and the rule: besides each value's own range,
-  /// t_end/output_dt must not exceed max_samples (the output would be absurdly large), and a
-  /// max_step > 0 must let max_steps steps reach t_end (max_step * max_steps >= t_end).
-  void validate() const;
-};
-
-enum class Termination {
-  t_end,
-  rest,
-  rolling,
-  stagnation,
-  law_pole,
-  non_finite,
-  law_error,
-  integrator_failure,
-  max_steps,
-  interrupted,
-  output_error,
-  output_limit
-};
-
-/// "t_end", "rest", "rolling", "stagnation", "law-pole", "non-finite", "law-error", "integrator-failure",
-/// "max-steps", "interrupted", "output-error", "output-limit".
-[[nodiscard]] std::string_view to_string(Termination t);
-
-struct RunSummary {
-  Termination reason = Termination::t_end;
-  std::string message;          ///< why, in one line (empty for t_end)
-  std::string rule;             ///< the rule that ended the run, in words (empty if none applies)
-  std::vector<Threshold> thresholds;  ///< the thresholds of that rule, as applied
-  double t_final = 0.0;         ///< s
-  StateVector x_final;          ///< the last good state
-  long steps = 0;               ///< accepted steps
-  long rejected_steps = 0;      ///< steps GSL retried with a smaller size
-  long rhs_calls = 0;           ///< evaluations of the right-hand side by the integrator
-  long samples = 0;             ///< samples the observer took
-  long sample_rhs_calls = 0;    ///< evaluations of the right-hand side for samples inside steps
-  long hermite_samples = 0;     ///< samples that fell back on cubic Hermite (dynamics/step_sampler.h)
-  double wall_time = 0.0;       ///< s
+/// The body's run: the core's summary (dynamics/run_summary.h) and what the body's events record.
+struct RunSummary : RunSummaryOf<StateVector> {
   long liftoffs = 0;            ///< contact -> no contact transitions (between steps)
   long landings = 0;            ///< no contact -> contact
   double min_normal_force = 0.0;  ///< min N over accepted steps, N
-  double initial_energy = 0.0;  ///< J
-  double final_energy = 0.0;    ///< J
   double max_gamma_drift = 0.0; ///< max | |gamma| - 1 | over accepted steps
   BodyScales scales;            ///< the body's scales (thresholds and tolerances)
   RestRule rest;                ///< the rest thresholds as applied
   SettleRule settle;            ///< the settling thresholds as applied
-  StateVector abs_tol;          ///< the absolute tolerance of each component (abs_tol * scale)
 };
 
 /// Integrates from x0 at t = 0. `observer` may be null. Throws std::invalid_argument for invalid

@@ -31,6 +31,7 @@
 #include <filesystem>
 #include <string_view>
 
+#include "dynamics/equations_of_motion.h"  // the body's Sample and Observer
 #include "dynamics/observer.h"
 #include "friction/support/checked_output.h"
 

@@ -29,6 +29,7 @@
 
 #include "bench/accuracy/report.h"
 #include "bench/mujoco/mujoco_sphere.h"
+#include "dynamics/equations_of_motion.h"  // the body's Sample and Observer
 #include "dynamics/observer.h"
 #include "dynamics/scenario.h"
 #include "dynamics/scenario_run.h"

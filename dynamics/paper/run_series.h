@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <vector>
 
+#include "dynamics/equations_of_motion.h"  // the body's Sample and Observer
 #include "dynamics/observer.h"
 
 namespace frictionlab::dynamics::paper {

@@ -5,6 +5,7 @@
 #include <numbers>
 
 #include "friction/support/errors.h"
+#include "friction/support/number_format.h"
 
 namespace frictionlab::dynamics::puck {
 
@@ -48,6 +49,18 @@ void PuckOnPlane::derivatives(const PuckState& x, const PuckContact& c, Holds ho
   spin(dxdt) = holds.spin ? 0.0 : -c.friction.M / puck_.inertia;
   slide_work(dxdt) = c.friction.F1 * c.U;
   spin_work(dxdt) = c.friction.M * c.Omega;
+}
+
+std::string PuckOnPlane::describe_friction(const PuckState& x, const Holds& holds) const {
+  const auto num = [](double v) { return support::message_number(v); };
+  try {
+    const PuckContact c = contact(x, holds);
+    return "friction law '" + std::string(law_.name()) + "' gives F1 = " + num(c.friction.F1) + " N, F2 = " +
+           num(c.friction.F2) + " N, M = " + num(c.friction.M) + " N m at U = " + num(c.U) + " m/s, Omega = " +
+           num(c.Omega) + " 1/s, psi = " + num(c.psi);
+  } catch (const std::exception& e) {
+    return e.what();
+  }
 }
 
 double PuckOnPlane::energy(const PuckState& x) const {

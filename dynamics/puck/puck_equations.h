@@ -19,6 +19,10 @@
 
 #include <Eigen/Core>
 
+#include <string>
+
+#include "dynamics/observer.h"
+#include "dynamics/pole_watch.h"
 #include "dynamics/puck/puck.h"
 #include "dynamics/puck/puck_state.h"
 #include "friction/law.h"
@@ -42,8 +46,21 @@ struct PuckContact {
   Eigen::Vector2d force;   ///< -F1 e1 - F2 e2, N
 };
 
+struct PuckRunSummary;  // dynamics/puck/puck_run.h
+
+/// A model of the integration loop (dynamics/run_loop.h): the types and the members after "The
+/// model interface" below; its events (the stops of slip and spin, held) are
+/// dynamics/puck/puck_run.h's.
 class PuckOnPlane {
  public:
+  // The model interface of dynamics/run_loop.h: the mode is which components are held.
+  static constexpr int kSize = PuckLayout::kSize;
+  using State = PuckState;
+  using Contact = PuckContact;
+  using Mode = Holds;
+  using Summary = PuckRunSummary;
+  class Monitor;  // dynamics/puck/puck_run.cpp
+
   /// Throws std::invalid_argument for an invalid puck, k or g (naming the scenario key).
   PuckOnPlane(const Puck& puck, double k, double g, const friction::FrictionLaw& law);
 
@@ -57,6 +74,18 @@ class PuckOnPlane {
   /// m v^2/2 + I omega^2/2 (J): the whole mechanical energy.
   [[nodiscard]] double energy(const PuckState& x) const;
 
+  // The model interface of dynamics/run_loop.h.
+  void contact(const PuckState& x, const Holds& holds, PuckContact& c) const { c = contact(x, holds); }
+  [[nodiscard]] double energy(const PuckState& x, const PuckContact& /*c*/) const { return energy(x); }
+  [[nodiscard]] double energy(const PuckState& x, const Holds& /*holds*/) const { return energy(x); }
+  [[nodiscard]] double kinetic_energy(const PuckState& x) const { return energy(x); }
+  [[nodiscard]] PoleWatch::Point pole_point(const PuckContact& c) const {
+    return PoleWatch::patch_point(c.U, c.Omega, puck_.a, puck_.b, c.psi);
+  }
+  /// The friction at a state, in one line (for failure messages only; never throws).
+  [[nodiscard]] std::string describe_friction(const PuckState& x, const Holds& holds) const;
+  [[nodiscard]] double friction_coefficient() const { return k_; }
+
   [[nodiscard]] const Puck& puck() const { return puck_; }
   [[nodiscard]] double k() const { return k_; }
   [[nodiscard]] double g() const { return g_; }
@@ -68,5 +97,9 @@ class PuckOnPlane {
   double g_;
   const friction::FrictionLaw& law_;
 };
+
+/// A sample and an observer of the puck's runs (dynamics/observer.h); the sample's mode is the holds.
+using PuckSample = SampleOf<PuckOnPlane>;
+using PuckObserver = ObserverOf<PuckOnPlane>;
 
 }  // namespace frictionlab::dynamics::puck

@@ -1,7 +1,8 @@
 #pragma once
-// One run of the puck (docs/puck.md): integrates dynamics/puck/puck_equations.h with the stepping
-// core every model shares (dynamics/ode_stepping.h: free steps under scaled error control, samples
-// inside accepted steps) from t = 0 to an event, and returns a summary.
+// One run of the puck (docs/puck.md): integrates dynamics/puck/puck_equations.h on the integration
+// loop every model shares (dynamics/run_loop.h: free steps under scaled error control, samples
+// inside accepted steps, the law's poles, limits and failures) from t = 0 to an event, and returns
+// a summary. The puck adds its own events: the stops of slip and spin, located and held.
 //
 // The laws are singular at U = Omega = 0, where both go to zero together at the end of a coupled
 // motion; and a discontinuous law (a decoupled Coulomb law) chatters where one of them reaches 0
@@ -32,30 +33,14 @@
 #include <string>
 #include <vector>
 
+#include "dynamics/body_scales.h"
 #include "dynamics/observer.h"
 #include "dynamics/puck/puck_equations.h"
-#include "dynamics/simulation.h"
+#include "dynamics/run_options.h"
+#include "dynamics/run_summary.h"
 #include "dynamics/threshold.h"
 
 namespace frictionlab::dynamics::puck {
-
-/// One output sample.
-struct PuckSample {
-  double t = 0.0;            ///< s
-  const PuckState& x;
-  const PuckContact& contact;
-  double energy = 0.0;       ///< J
-  Holds holds;
-};
-
-/// Receives the samples (t = 0, every multiple of run.output_dt, the final time) and the steps. May
-/// throw OutputFailure / OutputLimitReached (dynamics/observer.h): the run stops at once.
-class PuckObserver {
- public:
-  virtual ~PuckObserver() = default;
-  virtual void sample(const PuckSample& s) = 0;
-  virtual void step(double /*t*/) {}
-};
 
 /// The ratio U/(a |Omega|) where the kinetic energy crossed `level` times its initial value.
 struct RatioAtEnergy {
@@ -65,26 +50,11 @@ struct RatioAtEnergy {
   double ratio = 0.0;     ///< U/(a |Omega|)
 };
 
-struct PuckRunSummary {
-  Termination reason = Termination::t_end;
-  std::string message;
-  std::string rule;
-  std::vector<Threshold> thresholds;
-  double t_final = 0.0;
-  PuckState x_final = PuckState::Zero();
+/// The puck's run: the core's summary (dynamics/run_summary.h) and what the puck's events record.
+struct PuckRunSummary : RunSummaryOf<PuckState> {
   Holds holds;                 ///< at the end
-  long steps = 0;
-  long rejected_steps = 0;
-  long rhs_calls = 0;          ///< by the integrator
-  long samples = 0;
-  long sample_rhs_calls = 0;   ///< for samples inside steps and for locating the stops
-  long hermite_samples = 0;
-  double wall_time = 0.0;
-  double initial_energy = 0.0;
-  double final_energy = 0.0;
   Threshold slip_speed;        ///< as applied
   Threshold spin;              ///< as applied
-  PuckState abs_tol = PuckState::Zero();  ///< absolute tolerance per component
   double slip_stop_time = std::numeric_limits<double>::quiet_NaN();  ///< U fell below slip_speed (NaN: never)
   double spin_stop_time = std::numeric_limits<double>::quiet_NaN();  ///< |Omega| fell below spin
   double terminal_ratio = std::numeric_limits<double>::quiet_NaN();  ///< U/(a|Omega|) at the first stop

@@ -27,7 +27,7 @@ class Collector final : public PuckObserver {
   Collector(double a, double e0) : a_(a), e0_(e0) {}
   void sample(const PuckSample& s) override {
     path.emplace_back(position(s.x));
-    if (!s.holds.slip && !s.holds.spin && s.contact.Omega != 0.0 && e0_ > 0.0)
+    if (!s.mode.slip && !s.mode.spin && s.contact.Omega != 0.0 && e0_ > 0.0)
       curve.emplace_back(s.energy / e0_, s.contact.U / (a_ * std::abs(s.contact.Omega)));
   }
   std::vector<std::pair<double, double>> curve;

@@ -45,7 +45,7 @@ void PuckTrajectoryCsv::sample(const PuckSample& s) {
   put(line_, s.energy);
   put(line_, slide_work(s.x));
   put(line_, spin_work(s.x));
-  line_ += static_cast<char>('0' + (s.holds.slip ? 1 : 0) + (s.holds.spin ? 2 : 0));
+  line_ += static_cast<char>('0' + (s.mode.slip ? 1 : 0) + (s.mode.spin ? 2 : 0));
   line_ += '\n';
   try {
     file_.append(line_);

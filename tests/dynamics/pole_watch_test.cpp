@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "dynamics/equations_of_motion.h"
 #include "friction/pade_printed_law.h"
 #include "friction/registry.h"
 #include "tests/dynamics/test_support.h"
@@ -15,6 +16,11 @@ using frictionlab::bench::g_allocations;
 
 namespace frictionlab::dynamics {
 namespace {
+
+// The body's map of its contact to the watch's shape coordinates (BodyOnPlane::pole_point); a
+// point is itself.
+PoleWatch::Point pt(const ContactState& c) { return BodyOnPlane::pole_point(c); }
+PoleWatch::Point pt(const PoleWatch::Point& p) { return p; }
 
 constexpr double kMu = 0.9, kPsi = 0.3, kA = 0.01, kOmega = 10.0;
 
@@ -54,23 +60,23 @@ TEST(DynPoleWatch, ALawWithoutPolesIsNotWatched) {
   const auto law = friction::make_law("exact");
   PoleWatch w(*law, 0.1);
   EXPECT_FALSE(w.active());
-  w.set_reference(in_contact(1.0));
-  EXPECT_EQ(w.crossing(in_contact(1e6)), -1);
+  w.set_reference(pt(in_contact(1.0)));
+  EXPECT_EQ(w.crossing(pt(in_contact(1e6))), -1);
 }
 
 TEST(DynPoleWatch, MapsAStateToItsShape) {
   const auto law = friction::make_law("pade-printed");
   const PoleWatch w(*law, 0.1);
-  const PoleWatch::Point p = w.point(in_contact(3.0));
+  const PoleWatch::Point p = pt(in_contact(3.0));
   EXPECT_NEAR(p.t, 1.0 / (1.0 + 3.0), 1e-15);
   EXPECT_NEAR(p.mu, kMu, 1e-15);
   EXPECT_EQ(p.psi, kPsi);
-  const PoleWatch::Point q = w.point(out_of_contact());
+  const PoleWatch::Point q = pt(out_of_contact());
   EXPECT_EQ(q.t, 0.0);
   EXPECT_NEAR(q.mu, kMu, 1e-15);
   ContactState no_spin = in_contact(3.0);
   no_spin.Omega = 0.0;
-  EXPECT_EQ(w.point(no_spin).t, 0.0);  // s = inf
+  EXPECT_EQ(pt(no_spin).t, 0.0);  // s = inf
   // The denominators at a point are the law's at any contact of that shape.
   const auto d = w.denominators(p);
   const friction::ContactInput in{3.0 * 0.02 * 7.0, 7.0, 0.02, 0.02 * kMu, kPsi, 3.0, 0.1};
@@ -85,13 +91,13 @@ TEST(DynPoleWatch, FindsTheRealPoleOfThePrintedF2) {
   PoleWatch w(*law, 0.1);
   ASSERT_TRUE(w.active());
   const double s_r = f2_root();
-  w.set_reference(in_contact(0.9 * s_r));
-  EXPECT_EQ(w.crossing(in_contact(0.99 * s_r)), -1);
-  EXPECT_EQ(w.crossing(in_contact(1.01 * s_r)), 1);  // F2
-  EXPECT_EQ(w.crossing(in_contact(s_r * (1.0 + 1e-12))), 1);
-  w.set_reference(in_contact(1.1 * s_r));  // and from the other side
-  EXPECT_EQ(w.crossing(in_contact(0.9 * s_r)), 1);
-  EXPECT_EQ(w.crossing(in_contact(1e9)), -1);
+  w.set_reference(pt(in_contact(0.9 * s_r)));
+  EXPECT_EQ(w.crossing(pt(in_contact(0.99 * s_r))), -1);
+  EXPECT_EQ(w.crossing(pt(in_contact(1.01 * s_r))), 1);  // F2
+  EXPECT_EQ(w.crossing(pt(in_contact(s_r * (1.0 + 1e-12)))), 1);
+  w.set_reference(pt(in_contact(1.1 * s_r)));  // and from the other side
+  EXPECT_EQ(w.crossing(pt(in_contact(0.9 * s_r))), 1);
+  EXPECT_EQ(w.crossing(pt(in_contact(1e9))), -1);
 }
 
 TEST(DynPoleWatch, LandingAndLiftingOffWithSlipCrossTheRealPole) {
@@ -99,11 +105,11 @@ TEST(DynPoleWatch, LandingAndLiftingOffWithSlipCrossTheRealPole) {
   const auto law = friction::make_law("pade-printed");
   PoleWatch w(*law, 0.1);
   const double s_r = f2_root();
-  w.set_reference(out_of_contact());
-  EXPECT_EQ(w.crossing(in_contact(2.0 * s_r)), -1);
-  EXPECT_EQ(w.crossing(in_contact(0.5 * s_r)), 1);
-  w.set_reference(in_contact(0.5 * s_r));
-  EXPECT_EQ(w.crossing(out_of_contact()), 1);
+  w.set_reference(pt(out_of_contact()));
+  EXPECT_EQ(w.crossing(pt(in_contact(2.0 * s_r))), -1);
+  EXPECT_EQ(w.crossing(pt(in_contact(0.5 * s_r))), 1);
+  w.set_reference(pt(in_contact(0.5 * s_r)));
+  EXPECT_EQ(w.crossing(pt(out_of_contact())), 1);
 }
 
 TEST(DynPoleWatch, ASignChangeThroughInfinityIsNoPole) {
@@ -112,14 +118,14 @@ TEST(DynPoleWatch, ASignChangeThroughInfinityIsNoPole) {
   const auto law = friction::make_law("pade-printed");
   PoleWatch w(*law, 0.1);
   const ContactState before = in_contact(5.0, 0.01), after = in_contact(5.0, std::numbers::pi - 0.01);
-  const auto p0 = w.denominators(w.point(before)), p1 = w.denominators(w.point(after));
+  const auto p0 = w.denominators(pt(before)), p1 = w.denominators(pt(after));
   ASSERT_LT(p0[1], 0.0);
   ASSERT_GT(p1[1], 0.0);
-  w.set_reference(before);
-  EXPECT_EQ(w.crossing(after), -1);
+  w.set_reference(pt(before));
+  EXPECT_EQ(w.crossing(pt(after)), -1);
   // The same at psi = pi/2, where sin 2psi changes sign too.
-  w.set_reference(in_contact(5.0, std::numbers::pi / 2 - 0.01));
-  EXPECT_EQ(w.crossing(in_contact(5.0, std::numbers::pi / 2 + 0.01)), -1);
+  w.set_reference(pt(in_contact(5.0, std::numbers::pi / 2 - 0.01)));
+  EXPECT_EQ(w.crossing(pt(in_contact(5.0, std::numbers::pi / 2 + 0.01))), -1);
 }
 
 TEST(DynPoleWatch, AStateOnThePoleLetsNoStepLeaveIt) {
@@ -129,13 +135,13 @@ TEST(DynPoleWatch, AStateOnThePoleLetsNoStepLeaveIt) {
   PoleWatch w(law, 0.1);
   const PoleWatch::Point on = PoleWatch::patch_point(3.0, 1.0, 1.0, 1.0, 0.0);
   ASSERT_EQ(w.denominators(on)[1], 0.0);
-  w.set_reference(on);
-  EXPECT_EQ(w.crossing(PoleWatch::patch_point(3.0 + 1e-12, 1.0, 1.0, 1.0, 0.0)), 1);
-  EXPECT_EQ(w.crossing(PoleWatch::patch_point(3.0 - 1e-12, 1.0, 1.0, 1.0, 0.0)), 1);
+  w.set_reference(pt(on));
+  EXPECT_EQ(w.crossing(pt(PoleWatch::patch_point(3.0 + 1e-12, 1.0, 1.0, 1.0, 0.0))), 1);
+  EXPECT_EQ(w.crossing(pt(PoleWatch::patch_point(3.0 - 1e-12, 1.0, 1.0, 1.0, 0.0))), 1);
   // Off the pole nothing changes: the same side is no crossing.
-  w.set_reference(PoleWatch::patch_point(2.5, 1.0, 1.0, 1.0, 0.0));
-  EXPECT_EQ(w.crossing(PoleWatch::patch_point(2.9, 1.0, 1.0, 1.0, 0.0)), -1);
-  EXPECT_EQ(w.crossing(PoleWatch::patch_point(3.1, 1.0, 1.0, 1.0, 0.0)), 1);
+  w.set_reference(pt(PoleWatch::patch_point(2.5, 1.0, 1.0, 1.0, 0.0)));
+  EXPECT_EQ(w.crossing(pt(PoleWatch::patch_point(2.9, 1.0, 1.0, 1.0, 0.0))), -1);
+  EXPECT_EQ(w.crossing(pt(PoleWatch::patch_point(3.1, 1.0, 1.0, 1.0, 0.0))), 1);
 }
 
 TEST(DynPoleWatch, ACrossingAtRoundingLevelIsAPole) {
@@ -155,8 +161,8 @@ TEST(DynPoleWatch, ACrossingAtRoundingLevelIsAPole) {
           const PoleWatch::Point after = PoleWatch::patch_point(aw * (2.0 + j * 2.2e-16), omega, a, a, 0.0);
           if (!(w.denominators(before)[1] < 0.0 && w.denominators(after)[1] > 0.0)) continue;
           ++sign_changes;
-          w.set_reference(before);
-          EXPECT_EQ(w.crossing(after), 1) << a << " " << omega << " " << i << " " << j;
+          w.set_reference(pt(before));
+          EXPECT_EQ(w.crossing(pt(after)), 1) << a << " " << omega << " " << i << " " << j;
         }
   EXPECT_GT(sign_changes, 100);
 }
@@ -165,14 +171,14 @@ TEST(DynPoleWatch, WatchingMakesNoHeapAllocation) {
   const auto law = friction::make_law("pade-printed");
   PoleWatch w(*law, 0.1);
   const double s_r = f2_root();
-  w.set_reference(in_contact(0.9 * s_r));
-  (void)w.crossing(in_contact(2.0));  // warm-up
+  w.set_reference(pt(in_contact(0.9 * s_r)));
+  (void)w.crossing(pt(in_contact(2.0)));  // warm-up
   const long long before = g_allocations.load();
   int found = 0;
   for (int i = 0; i < 100; ++i) {
-    found += w.crossing(in_contact(0.5 * s_r + 0.01 * i)) >= 0;
-    found += w.crossing(in_contact(1.5 * s_r)) >= 0;  // a sign change, classified by bisection
-    found += w.crossing(in_contact(5.0, std::numbers::pi - 0.01)) >= 0;
+    found += w.crossing(pt(in_contact(0.5 * s_r + 0.01 * i))) >= 0;
+    found += w.crossing(pt(in_contact(1.5 * s_r))) >= 0;  // a sign change, classified by bisection
+    found += w.crossing(pt(in_contact(5.0, std::numbers::pi - 0.01))) >= 0;
   }
   EXPECT_EQ(g_allocations.load() - before, 0);
   EXPECT_EQ(found, 100);

@@ -8,6 +8,7 @@
 #include <sstream>
 #include <string>
 
+#include "dynamics/equations_of_motion.h"  // the body's Sample and Observer
 #include "friction/support/checked_output.h"
 
 namespace frictionlab::dynamics {

@@ -2,9 +2,11 @@
 
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
 #include <cmath>
 #include <stdexcept>
 
+#include "dynamics/equations_of_motion.h"
 #include "test_support.h"
 
 namespace frictionlab::dynamics {
@@ -24,6 +26,9 @@ struct SpinningFlight {
     return make_state(turn * v0, {0.0, 0.0, w}, turn * g0, eps0 + v0.dot(g0) * t);
   }
 };
+
+using AcceptedStep = AcceptedStepOf<StateVector>;
+const BodyMode kFree{};  // the body's one mode
 
 AcceptedStep exact_step(const BodyOnPlane& sys, const SpinningFlight& f, double t0, double h) {
   AcceptedStep s;
@@ -45,7 +50,7 @@ TEST(DynStepSampler, SamplesInsideAStepAreAsAccurateAsItsEnds) {
   const SpinningFlight f;
   const double h = 0.2 / f.w;
   const AcceptedStep step = exact_step(sys, f, 0.1, h);
-  StepSampler sampler("rk8pd", sys);
+  StepSamplerOf<BodyOnPlane> sampler("rk8pd", sys, kFree);
   double worst_hermite = 0.0;
   for (const double u : {0.1, 0.37, 0.5, 0.81}) {
     const double t = step.t0 + u * h;
@@ -65,7 +70,7 @@ TEST(DynStepSampler, InterpolatedSamplesAreTheCubicHermiteInterpolantAtNoRhsCall
   const SpinningFlight f;
   const double h = 0.2 / f.w;
   const AcceptedStep step = exact_step(sys, f, 0.1, h);
-  StepSampler sampler("rk8pd", sys, SampleAccuracy::interpolated);
+  StepSamplerOf<BodyOnPlane> sampler("rk8pd", sys, kFree, SampleAccuracy::interpolated);
   for (const double u : {0.1, 0.37, 0.5, 0.81}) {
     const double t = step.t0 + u * h;
     EXPECT_EIGEN_NEAR(sampler.at(step, t), cubic_hermite(step, t), 0.0) << "u = " << u;
@@ -80,7 +85,7 @@ TEST(DynStepSampler, TheEndsAreReturnedExactly) {
   const testing::ForbiddenLaw law;
   const BodyOnPlane sys(testing::egg_body("egg-printed"), PlaneContact{0.1, 1e7, 0.0}, law);
   const AcceptedStep step = exact_step(sys, SpinningFlight{}, 0.0, 0.01);
-  StepSampler sampler("rkf45", sys);
+  StepSamplerOf<BodyOnPlane> sampler("rkf45", sys, kFree);
   EXPECT_EIGEN_NEAR(sampler.at(step, step.t0), step.x0, 0.0);
   EXPECT_EIGEN_NEAR(sampler.at(step, step.t1), step.x1, 0.0);
   EXPECT_EQ(sampler.rhs_calls(), 0);
@@ -105,9 +110,9 @@ TEST(DynStepSampler, TheCubicHermiteInterpolantIsOfOrderFour) {
 TEST(DynStepSampler, UsesTheRunsOneStepMethodAndRk8pdForAMultistepOne) {
   const testing::ForbiddenLaw law;
   const BodyOnPlane sys(testing::egg_body("egg-printed"), PlaneContact{0.1, 1e7, 0.0}, law);
-  EXPECT_EQ(StepSampler("rkck", sys).method(), "rkck");
-  EXPECT_EQ(StepSampler("msadams", sys).method(), "rk8pd");
-  EXPECT_THROW(StepSampler("euler", sys), std::invalid_argument);
+  EXPECT_EQ(StepSamplerOf<BodyOnPlane>("rkck", sys, kFree).method(), "rkck");
+  EXPECT_EQ(StepSamplerOf<BodyOnPlane>("msadams", sys, kFree).method(), "rk8pd");
+  EXPECT_THROW(StepSamplerOf<BodyOnPlane>("euler", sys, kFree), std::invalid_argument);
 }
 
 // A law that rejects every contact: a sampling step that runs into it falls back on Hermite.
@@ -132,7 +137,7 @@ TEST(DynStepSampler, FallsBackOnHermiteWhereTheRightHandSideFails) {
   step.x1 = step.x0;
   step.f0.setZero();
   step.f1.setZero();
-  StepSampler sampler("rk8pd", sys);
+  StepSamplerOf<BodyOnPlane> sampler("rk8pd", sys, kFree);
   EXPECT_EIGEN_NEAR(sampler.at(step, 5e-4), cubic_hermite(step, 5e-4), 0.0);
   EXPECT_EQ(sampler.hermite_fallbacks(), 1);
 }
