@@ -8,9 +8,11 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "dynamics/output_limit.h"
 #include "dynamics/patch_model.h"
 #include "dynamics/scenario_limits.h"
 #include "dynamics/scenario_toml.h"
+#include "dynamics/trajectory_csv.h"
 #include "friction/registry.h"
 #include "friction/support/errors.h"
 #include "friction/support/number_format.h"
@@ -131,6 +133,8 @@ Scenario build(const toml::table& root, const std::string& source, const std::ve
 
   // [run]
   s.run = scenario_toml::read_run(root, scenario_toml::RunKeys::body);
+  check_planned_output(s.run.t_end, s.run.output_dt, s.run.max_output_bytes, trajectory_header().size(),
+                       kMinTrajectoryRowBytes, "trajectory.csv");
 
   s.resolved_toml = resolved_text(root, s.name, s.law);
   return s;

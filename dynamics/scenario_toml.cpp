@@ -191,6 +191,7 @@ RunOptions read_run(const toml::table& root, RunKeys keys) {
   r.t_end = run.number("t_end");
   r.output_dt = run.number("output_dt", 1e-3);
   r.max_samples = run.integer("max_samples", r.max_samples);
+  r.max_output_bytes = run.integer("max_output_bytes", r.max_output_bytes);
   r.integrator.method = run.string("integrator", r.integrator.method);
   r.integrator.abs_tol = run.number("abs_tol", r.integrator.abs_tol);
   r.integrator.rel_tol = run.number("rel_tol", r.integrator.rel_tol);
@@ -200,9 +201,9 @@ RunOptions read_run(const toml::table& root, RunKeys keys) {
   // Unset thresholds take defaults scaled to the body (dynamics/rest_event.h, dynamics/settling.h).
   r.rest.slip_speed = run.optional_number("rest_slip_speed");
   r.rest.spin = run.optional_number("rest_spin");
-  std::vector<std::string> known = {"t_end",        "output_dt", "max_samples",     "integrator", "abs_tol",
-                                    "rel_tol",      "initial_step", "max_step",      "max_steps",  "rest_slip_speed",
-                                    "rest_spin"};
+  std::vector<std::string> known = {"t_end",        "output_dt", "max_samples",     "max_output_bytes", "integrator",
+                                    "abs_tol",      "rel_tol",   "initial_step",    "max_step",         "max_steps",
+                                    "rest_slip_speed", "rest_spin"};
   if (keys == RunKeys::body) {
     r.rest.kinetic_energy = run.optional_number("rest_kinetic_energy");
     r.settle.time = run.optional_number("settle_time");

@@ -136,6 +136,8 @@ void RunOptions::validate() const {
   if (!(std::isfinite(output_dt) && output_dt > 0.0))
     throw invalid_value("run.output_dt", output_dt, "it must be finite and > 0 s");
   if (max_samples <= 0) throw invalid_value("run.max_samples", static_cast<long long>(max_samples), "it must be > 0");
+  if (max_output_bytes <= 0)
+    throw invalid_value("run.max_output_bytes", static_cast<long long>(max_output_bytes), "it must be > 0 bytes");
   if (t_end / output_dt > static_cast<double>(max_samples))
     throw invalid_value("run.output_dt", output_dt,
                         "run.t_end/run.output_dt = " + message_number(t_end / output_dt) +

@@ -39,6 +39,7 @@
 #include "dynamics/equations_of_motion.h"
 #include "dynamics/integrator_options.h"
 #include "dynamics/observer.h"
+#include "dynamics/output_limit.h"
 #include "dynamics/rest_event.h"
 #include "dynamics/settling.h"
 #include "dynamics/state.h"
@@ -46,14 +47,19 @@
 
 namespace frictionlab::dynamics {
 
-/// Default run.max_samples: 1e7 rows (~4.4 GB of trajectory.csv at ~440 bytes a row) is ten times
-/// what the paper's runs plan (t_end = 1000 s at output_dt = 1e-3 s).
+/// Default run.max_samples: 1e7 samples, ten times what the paper's scenario files once planned
+/// (t_end = 1000 s at output_dt = 1e-3 s). It bounds the samples a run may plan whatever keeps
+/// them (in memory too); the size of the trajectory file has its own, tighter limit
+/// (max_output_bytes, dynamics/output_limit.h).
 inline constexpr long kDefaultMaxSamples = 10'000'000;
 
 struct RunOptions {
   double t_end = 1.0;       ///< s, > 0
   double output_dt = 1e-3;  ///< s, > 0: the sample interval; t_end/output_dt <= max_samples
   long max_samples = kDefaultMaxSamples;  ///< > 0: the most samples a run may plan
+  /// > 0, bytes: the largest trajectory file a run may write (dynamics/output_limit.h); enforced
+  /// by the writers (dynamics/trajectory_csv.h), not by simulate().
+  long max_output_bytes = kDefaultMaxOutputBytes;
   IntegratorOptions integrator;
   RestThresholds rest;
   SettleThresholds settle;

@@ -1,5 +1,6 @@
 #include "dynamics/trajectory_csv.h"
 
+#include "friction/support/errors.h"
 #include "friction/support/number_format.h"
 
 namespace frictionlab::dynamics {
@@ -27,12 +28,22 @@ std::array<double, kTrajectoryColumns.size()> trajectory_row(const Sample& s) {
           c.in_contact ? 1.0 : 0.0};
 }
 
-TrajectoryCsv::TrajectoryCsv(const std::filesystem::path& file) : file_(file) {
+std::string trajectory_header() {
   std::string header;
   for (std::size_t i = 0; i < kTrajectoryColumns.size(); ++i) {
     header += kTrajectoryColumns[i];
     header += i + 1 < kTrajectoryColumns.size() ? ',' : '\n';
   }
+  return header;
+}
+
+TrajectoryCsv::TrajectoryCsv(const std::filesystem::path& file, std::uint64_t max_bytes) : file_(file) {
+  const std::string header = trajectory_header();
+  if (max_bytes > 0 && header.size() > max_bytes)
+    throw support::invalid_value("run.max_output_bytes", static_cast<long long>(max_bytes),
+                                 "it must hold at least the header of trajectory.csv (" +
+                                     std::to_string(header.size()) + " bytes)");
+  file_.set_size_limit(max_bytes);
   file_.append(header);
   line_.reserve(512);
 }
@@ -46,6 +57,8 @@ void TrajectoryCsv::sample(const Sample& s) {
     file_.append(line_);
   } catch (const support::OutputError& e) {
     throw OutputFailure(e.what());
+  } catch (const support::SizeLimitReached& e) {
+    throw OutputLimitReached(std::string(e.what()) + " (run.max_output_bytes: raise it, or run.output_dt)");
   }
   ++rows_;
 }

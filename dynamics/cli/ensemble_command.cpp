@@ -87,7 +87,8 @@ void register_ensemble_command(CLI::App& app) {
   auto opt = std::make_shared<EnsembleCliOptions>();
   auto* cmd = app.add_subcommand(
       "ensemble", "Run a study: every (start x replica x law) run on all cores, or over MPI ranks under mpirun; "
-                  "runs.csv and a report against the chaos floor (docs/ensembles.md)");
+                  "runs.csv and a report against the chaos floor (docs/ensembles.md); ~0.4 kB a run in runs.csv, "
+                  "~0.1 MB of report and maps, --hdf5 up to ~50 kB a run");
   cmd->add_option("study", opt->study, "The study file (TOML)")->required();
   cmd->add_option("--out", opt->out, "Output folder (created if needed)")->required();
   cmd->add_option("--threads", opt->threads, "Worker threads (default 0: one per core; under MPI, of rank 0: 1)");

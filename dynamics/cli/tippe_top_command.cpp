@@ -46,7 +46,7 @@ void register_tippe_top_command(CLI::App& app) {
   auto opt = std::make_shared<TippeTopCommandOptions>();
   auto* cmd = app.add_subcommand("tippe-top",
                                  "The tippe top with every friction law: gamma3 against time, inversion times, energy\n"
-                                 "and Jellett's quantity (docs/tippe-top.md)");
+                                 "and Jellett's quantity (docs/tippe-top.md); ~0.4 MB");
   cmd->add_option("--out", opt->out, "output folder (created; existing files are replaced)")->required();
   cmd->add_option("--laws", opt->laws,
                   "law specs, separated by ';' or ',' (default: every registered law that is not slow, and decoupled, "

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <limits>
 
+#include "friction/support/errors.h"
 #include "friction/support/number_format.h"
 
 namespace frictionlab::dynamics::puck {
@@ -15,12 +16,23 @@ void put(std::string& line, double x) {
 
 }  // namespace
 
-PuckTrajectoryCsv::PuckTrajectoryCsv(const std::filesystem::path& file, double a) : file_(file), a_(a) {
+std::string puck_trajectory_header() {
   std::string header;
   for (std::size_t i = 0; i < kPuckTrajectoryColumns.size(); ++i) {
     header += kPuckTrajectoryColumns[i];
     header += i + 1 < kPuckTrajectoryColumns.size() ? ',' : '\n';
   }
+  return header;
+}
+
+PuckTrajectoryCsv::PuckTrajectoryCsv(const std::filesystem::path& file, double a, std::uint64_t max_bytes)
+    : file_(file), a_(a) {
+  const std::string header = puck_trajectory_header();
+  if (max_bytes > 0 && header.size() > max_bytes)
+    throw support::invalid_value("run.max_output_bytes", static_cast<long long>(max_bytes),
+                                 "it must hold at least the header of trajectory.csv (" +
+                                     std::to_string(header.size()) + " bytes)");
+  file_.set_size_limit(max_bytes);
   file_.append(header);
   line_.reserve(400);
 }
@@ -51,6 +63,8 @@ void PuckTrajectoryCsv::sample(const PuckSample& s) {
     file_.append(line_);
   } catch (const support::OutputError& e) {
     throw OutputFailure(e.what());
+  } catch (const support::SizeLimitReached& e) {
+    throw OutputLimitReached(std::string(e.what()) + " (run.max_output_bytes: raise it, or run.output_dt)");
   }
   ++rows_;
 }

@@ -108,7 +108,9 @@ def test_progress_is_called_and_can_stop_the_run(scenarios):
         seen.append((t, t_end))
         return len(seen) < 3
 
-    result = frictionlab.simulate(path, progress=progress)
+    # Sampled every 1e-3 s (as the file did until 2026-11-28): the run lasts long enough (~1 s of
+    # wall time) for three calls 0.05 s apart.
+    result = frictionlab.simulate(path, overrides={"run.output_dt": 1e-3}, progress=progress)
     assert len(seen) == 3
     assert all(t_end == 1000.0 for _, t_end in seen)
     assert [t for t, _ in seen] == sorted(t for t, _ in seen)
@@ -130,12 +132,14 @@ def test_an_exception_in_progress_stops_the_run_and_is_raised(scenarios):
 
 
 def test_ctrl_c_stops_the_run_and_keeps_what_ran(scenarios, tmp_path):
-    # egg-printed-a runs ~120 s of simulated time (seconds of wall time); SIGINT comes at 0.3 s.
+    # egg-printed-a runs ~120 s of simulated time (about a second of wall time when sampled every
+    # 1e-3 s, as the file did until 2026-11-28); SIGINT comes at 0.3 s.
     timer = threading.Timer(0.3, os.kill, (os.getpid(), signal.SIGINT))
     timer.start()
     try:
         with pytest.raises(frictionlab.Interrupted) as e:
-            frictionlab.simulate(os.path.join(scenarios, "egg-printed-a.toml"), out=tmp_path)
+            frictionlab.simulate(os.path.join(scenarios, "egg-printed-a.toml"), overrides={"run.output_dt": 1e-3},
+                                 out=tmp_path)
     finally:
         timer.cancel()
     result = e.value.result

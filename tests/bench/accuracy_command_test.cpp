@@ -27,7 +27,7 @@ std::filesystem::path temp_out(const char* tag) {
 TEST(AccuracyCommand, TinyStudyWritesTheFiles) {
   const auto out = temp_out("ok");
   const auto r = run_frictionlab("accuracy --out " + out.string() +
-                                 " --laws pade-printed --s-points 5 --mu-points 2 --psi-points 3 --no-plots");
+                                 " --laws pade-printed --s-points 5 --mu-points 2 --psi-points 3 --no-plots --points");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(r.out, "");  // progress goes to stderr
   EXPECT_NE(r.err.find("accuracy: pade-printed"), std::string::npos) << r.err;
@@ -39,6 +39,28 @@ TEST(AccuracyCommand, TinyStudyWritesTheFiles) {
   std::filesystem::remove_all(out);
 }
 
+std::uintmax_t folder_bytes(const std::filesystem::path& dir) {
+  std::uintmax_t bytes = 0;
+  for (const auto& entry : std::filesystem::recursive_directory_iterator(dir))
+    if (entry.is_regular_file()) bytes += entry.file_size();
+  return bytes;
+}
+
+// The default study (200 000 points, six laws) writes what a laptop user accepts: the summaries,
+// tables and figure data, no per-point tables (165 MB; --points asks for them). The figures are
+// left out (--no-plots: gnuplot may be missing; they add ~1 MB, docs/accuracy.md).
+TEST(AccuracyCommand, TheDefaultStudyWritesUnder20MBAndNoPerPointTables) {
+  const auto out = temp_out("default");
+  const auto r = run_frictionlab("accuracy --out " + out.string() + " --no-plots");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(out / "points")) << "per-point tables written unasked";
+  EXPECT_TRUE(std::filesystem::exists(out / "summary.csv"));
+  EXPECT_LT(folder_bytes(out), 20'000'000u);
+  const std::string readme = slurp(out / "README.md");
+  EXPECT_NE(readme.find("not written by this run: add `--points`"), std::string::npos) << readme;
+  std::filesystem::remove_all(out);
+}
+
 void expect_one_line_error(const std::string& args, const std::string& fragment);
 
 TEST(AccuracyCommand, SpecsForTheLawsAndTheReferenceAreEchoedVerbatim) {
@@ -46,7 +68,7 @@ TEST(AccuracyCommand, SpecsForTheLawsAndTheReferenceAreEchoedVerbatim) {
   const auto out = temp_out("spec");
   const auto r = run_frictionlab("accuracy --out " + out.string() +
                                  " --reference exact:pressure=uniform --laws 'exact:pressure=punch;pade-printed'"
-                                 " --s-points 5 --mu-points 2 --psi-points 3 --no-plots");
+                                 " --s-points 5 --mu-points 2 --psi-points 3 --no-plots --points");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.err.find("against 'exact:pressure=uniform'"), std::string::npos) << r.err;
   for (const char* f : {"points/exact_pressure-uniform.csv", "points/exact_pressure-punch.csv",

@@ -31,6 +31,16 @@ TEST(CliMain, HelpStillPrintsHelpAndExitsZero) {
   }
 }
 
+// Every command that writes files says in its --help how much it writes (docs/dynamics.md §6 has
+// the measured sizes), so that nobody learns it from a full disk.
+TEST(CliMain, EveryCommandThatWritesFilesStatesItsSizeInItsHelp) {
+  for (const std::string command : {"simulate", "accuracy", "calibrate", "paper", "tippe-top", "puck-study", "ensemble"}) {
+    const auto r = run_frictionlab(command + " --help");
+    EXPECT_EQ(r.exit_code, 0) << command << ": " << r.err;
+    EXPECT_NE(r.out.find(" MB"), std::string::npos) << command << " --help states no size:\n" << r.out;
+  }
+}
+
 // Every command-line error, CLI11's own included, is one line `frictionlab: error: ...` and exit 1.
 struct CliError {
   std::string args;

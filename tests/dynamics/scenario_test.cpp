@@ -268,6 +268,29 @@ TEST(DynScenario, TheLawMayBeASpecKeptVerbatim) {
   EXPECT_NE(e.find("pressure must be one of hertz"), std::string::npos) << e;
 }
 
+// The size of trajectory.csv is limited in bytes (run.max_output_bytes, dynamics/output_limit.h):
+// a default stated in docs/dynamics.md, overridable, positive.
+TEST(DynScenario, TheTrajectoryByteLimitHasItsStatedDefaultAndIsOverridable) {
+  EXPECT_EQ(parse_scenario(kGood, "test.toml").run.max_output_bytes, 100'000'000);  // docs/dynamics.md §4: 100 MB
+  EXPECT_EQ(parse_scenario(kGood, "test.toml", {"run.max_output_bytes=500000"}).run.max_output_bytes, 500'000);
+  const std::string e = error_of(kGood, {"run.max_output_bytes=0"});
+  EXPECT_EQ(e.rfind("--set run.max_output_bytes=0: run.max_output_bytes = 0 is invalid", 0), 0u) << e;
+}
+
+// A plan that would write more than the limit even at one character per value is refused before
+// anything runs, naming the key, the file and the limit: 3 s at 3.3e-7 s is 9.1e6 rows of at
+// least 2 bytes per column (50 bytes), 450 MB > 100 MB.
+TEST(DynScenario, AnOutputIntervalWhosePlanPassesTheByteLimitIsRefused) {
+  const std::string e = error_of(kGood, {"run.t_end=3", "run.output_dt=3.3e-7"});
+  EXPECT_EQ(e.rfind("--set run.output_dt=3.3e-7: run.output_dt = 3.3e-07 is invalid", 0), 0u) << e;
+  for (const char* word : {"trajectory.csv", "run.max_output_bytes = 100000000", "50 bytes"})
+    EXPECT_NE(e.find(word), std::string::npos) << word << " in " << e;
+  // The same plan with the limit raised on purpose is accepted; a plan at the limit is too.
+  EXPECT_NO_THROW((void)parse_scenario(kGood, "test.toml", {"run.t_end=3", "run.output_dt=3.3e-7",
+                                                            "run.max_output_bytes=1000000000"}));
+  EXPECT_NO_THROW((void)parse_scenario(kGood, "test.toml", {"run.t_end=1", "run.output_dt=1e-6"}));  // 50 MB
+}
+
 TEST(DynScenario, ShippedScenariosAreValid) {
   const std::filesystem::path dir = std::filesystem::path(FRICTIONLAB_SOURCE_DIR) / "data" / "scenarios";
   int n = 0;

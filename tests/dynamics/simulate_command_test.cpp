@@ -131,6 +131,46 @@ TEST(DynSimulateCommand, AFileSizeLimitStopsTheRunWithOneErrorAndValidFiles) {
   std::filesystem::remove_all(dir);
 }
 
+// run.max_output_bytes, enforced by the writer on the bytes it writes: the plan (1001 rows of at
+// least 50 bytes) fits 100 kB, the rows (~450 bytes each) do not. The run stops with reason
+// output-limit (exit 3, one line), its file whole and within one row of the limit, never past it.
+TEST(DynSimulateCommand, AnOutputPastRunMaxOutputBytesStopsTheRunAtTheLimit) {
+  const auto dir = fresh_dir("max_output_bytes");
+  constexpr std::uintmax_t kLimit = 100000;
+  constexpr std::uintmax_t kLongestRow = 25 * 25;  // 25 values of at most 24 characters, and separators
+  const auto r = run_frictionlab("simulate " + kScenarios + "sphere-spinning.toml --set run.t_end=1 "
+                                 "--set run.output_dt=1e-3 --set run.max_output_bytes=100000 --out " + dir.string());
+  EXPECT_EQ(r.exit_code, 3) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_NE(r.err.find("stopped early (output-limit)"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("run.max_output_bytes"), std::string::npos) << r.err;
+  const std::string csv = slurp(dir / "trajectory.csv");
+  EXPECT_LE(csv.size(), kLimit);
+  EXPECT_GT(csv.size() + kLongestRow, kLimit);
+  expect_whole_rows(csv);
+  const auto summary = nlohmann::json::parse(slurp(dir / "summary.json"));
+  EXPECT_EQ(summary["termination"]["reason"], "output-limit");
+  EXPECT_EQ(summary["output"]["trajectory_bytes"], csv.size());
+  EXPECT_EQ(summary["output"]["max_output_bytes"], kLimit);
+  EXPECT_LT(summary["final_time"].get<double>(), 1.0);
+  std::filesystem::remove_all(dir);
+}
+
+// A shipped scenario run as it is writes what a laptop user accepts (README, docs/dynamics.md §6:
+// at most 20 MB per run). egg-homogeneous-c is the largest (the longest run, to rest at 454 s):
+// 213 MB at its old output_dt of 1e-3 s, 10.6 MB at 0.02 s. ~3 s of integration in Release.
+TEST(DynSimulateCommand, TheLargestShippedScenarioWritesUnder20MB) {
+  const auto dir = fresh_dir("largest");
+  const auto r = run_frictionlab("simulate " + kScenarios + "egg-homogeneous-c.toml --out " + dir.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  std::uintmax_t bytes = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(dir)) bytes += entry.file_size();
+  EXPECT_LT(bytes, 20'000'000u);
+  const auto summary = nlohmann::json::parse(slurp(dir / "summary.json"));
+  EXPECT_EQ(summary["termination"]["reason"], "rest");  // it ran to its end: the size is the whole run's
+  std::filesystem::remove_all(dir);
+}
+
 // The summary does not fit under the limit while the short trajectory does: no summary.json at
 // all (never half of one), an error naming it, exit 1.
 TEST(DynSimulateCommand, ASummaryThatCannotBeWrittenIsAnErrorAndLeavesNoPartialFile) {
