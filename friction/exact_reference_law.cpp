@@ -162,7 +162,8 @@ double integrate(Problem pb) {
   if ((status != GSL_SUCCESS && !(status == GSL_EROUND && error < kAcceptedAbsError)) ||
       pb.inner_status != GSL_SUCCESS) {
     const int bad = pb.inner_status != GSL_SUCCESS ? pb.inner_status : status;
-    throw std::runtime_error(std::string("exact-reference: GSL integration failed: ") +
+    // A domain error (ValueError in Python): the quadrature cannot compute the law at this input.
+    throw std::domain_error(std::string("exact-reference: GSL integration failed: ") +
                              gsl_strerror(bad));
   }
   return result;

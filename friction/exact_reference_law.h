@@ -16,7 +16,7 @@
 // integral (QAGP/QAGS) breaks at the ray's closest approach to the ICR, and the outer one (QAG,
 // 21-point Gauss-Kronrod, on [t_c, t_c + 2 pi]) breaks at the ICR's direction t_c, at t_c + pi
 // and at the major axis (t = 0, pi, where r_max^2 peaks over a width ~b/a). Requested errors:
-// 1e-12 (outer) per kN and per kNa; a GSL error estimate above 1e-10 throws std::runtime_error.
+// 1e-12 (outer) per kN and per kNa; a GSL error estimate above 1e-10 throws std::domain_error.
 //
 // Domain and accuracy: b/a >= kExactReferenceMinAxisRatio = 0.01, where it is accurate to
 // kExactReferenceAccuracy = 1e-10 kN and kNa. Measured against `exact` on 1,600 seeded points

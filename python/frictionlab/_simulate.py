@@ -116,12 +116,16 @@ def simulate(scenario, law=None, overrides=None, *, out=None, progress=None):
     Raises
     ------
     ValueError
-        A bad scenario, key, value or law, with the command line's message (naming the key and
-        the rule); nothing is run.
+        A bad scenario, key, value or law, with the command line's message (naming the key, for
+        a dict the dict's key, and the rule); nothing is run.
+    TypeError
+        A dict holding something a scenario cannot (None, a complex number, ...), naming its key.
+    FileNotFoundError, PermissionError, IsADirectoryError
+        The scenario file cannot be read (OSErrors, with the command line's message).
     Interrupted
         Ctrl-C during the run (a KeyboardInterrupt): ``.result`` holds what ran.
-    OSError
-        The output folder or a file could not be written.
+    OutputError
+        The output folder or a file could not be written (an OSError).
 
     A run that stops early for a physical or numerical reason (a pole of the law, a failed
     integrator, max-steps) is not an error: its summary says why (``result.reason``). The GIL is

@@ -11,10 +11,23 @@ import numbers
 
 __all__ = ["to_toml", "toml_value"]
 
+# TOML integers are 64-bit signed: a larger Python int would fail in the parser, which could
+# only name a line of the generated text; it is refused here, naming the key.
+_INT_MIN, _INT_MAX = -2**63, 2**63 - 1
+
+
+def _check_text(s, what):
+    """Text that UTF-8 cannot hold (a lone surrogate) would fail on its way to the parser."""
+    try:
+        s.encode("utf-8")
+    except UnicodeEncodeError:
+        raise ValueError(f"{what} is invalid: it is not Unicode text (it holds a lone surrogate)") from None
+
 
 def _key(k):
     if not isinstance(k, str):
         raise TypeError(f"scenario key {k!r} is invalid: keys must be strings")
+    _check_text(k, f"scenario key {k!r}")
     if k and all(c.isalnum() and c.isascii() or c in "_-" for c in k):
         return k
     return _string(k)
@@ -40,8 +53,12 @@ def toml_value(v, where="value"):
     if isinstance(v, bool):
         return "true" if v else "false"
     if isinstance(v, str):
+        _check_text(v, f"scenario {where} = {v!r}")
         return _string(v)
     if isinstance(v, numbers.Integral):
+        if not _INT_MIN <= int(v) <= _INT_MAX:
+            raise ValueError(f"scenario {where} = {int(v)} is invalid: an integer must be within [-2^63, 2^63 - 1] "
+                             "(TOML's 64 bits); write a larger number as a float")
         return str(int(v))
     if isinstance(v, numbers.Real):
         x = float(v)
@@ -54,7 +71,7 @@ def toml_value(v, where="value"):
         items = v.tolist() if hasattr(v, "tolist") else v
         if not isinstance(items, list):
             return toml_value(items, where)
-        return "[" + ", ".join(toml_value(x, where) for x in items) + "]"
+        return "[" + ", ".join(toml_value(x, f"{where}[{i}]") for i, x in enumerate(items)) + "]"
     raise TypeError(f"scenario {where} = {v!r} is invalid: a scenario holds tables (dicts), strings, "
                     f"booleans, numbers and lists of them")
 

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "bindings.h"
+#include "file_errors.h"
 #include "dynamics/scenario.h"
 #include "dynamics/scenario_run.h"
 #include "dynamics/trajectory_csv.h"
@@ -90,7 +91,8 @@ py::tuple run(const std::optional<std::string>& path, const std::string& text, c
               const std::vector<std::string>& overrides, const std::string& out_dir, py::object progress,
               double interval) {
   const dynamics::ScenarioDocument doc =
-      path ? dynamics::ScenarioDocument::read(*path) : dynamics::ScenarioDocument::parse(text, source);
+      path ? reading_file(*path, [&] { return dynamics::ScenarioDocument::read(*path); })
+           : dynamics::ScenarioDocument::parse(text, source);
   const dynamics::Scenario scenario = doc.resolve(overrides);
   std::atomic<bool> cancel{false};
   Collector collector(std::move(progress), scenario.run.t_end, interval, cancel);
