@@ -39,6 +39,25 @@ TEST(AccuracyCommand, TinyStudyWritesTheFiles) {
   std::filesystem::remove_all(out);
 }
 
+TEST(AccuracyCommand, FigureTextShowsLawSpecsAsTheyAre) {
+  // A law spec's '_' is markup to gnuplot's enhanced text: every title and key entry escapes it.
+  const auto out = temp_out("figure_text");
+  const auto r = run_frictionlab("accuracy --out " + out.string() +
+                                 " --laws decoupled:r_spin=0.001 --s-points 5 --mu-points 2 --psi-points 3 --no-plots");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  int scripts = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(out / "plots")) {
+    if (entry.path().extension() != ".gp") continue;
+    ++scripts;
+    std::ifstream in(entry.path());
+    const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    EXPECT_NE(text.find("decoupled:r\\_spin=0.001"), std::string::npos) << entry.path() << "\n" << text;
+    EXPECT_EQ(text.find("decoupled:r_spin"), std::string::npos) << entry.path() << "\n" << text;
+  }
+  EXPECT_GE(scripts, 2);
+  std::filesystem::remove_all(out);
+}
+
 void expect_one_line_error(const std::string& args, const std::string& fragment);
 
 TEST(AccuracyCommand, SpecsForTheLawsAndTheReferenceAreEchoedVerbatim) {
