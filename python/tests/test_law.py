@@ -44,6 +44,7 @@ def cli_forces(cli, tmp_path, law, contacts):
     cols = read_csv_columns(out)
     for k in INPUTS:  # the command read the same inputs
         np.testing.assert_array_equal(bits(cols[k]), bits(contacts[k]))
+    assert cols["law"] == [law] * n
     return cols["F1"], cols["F2"], cols["M"]
 
 
