@@ -175,7 +175,8 @@ void write_calibration_markdown(std::ostream& out, const CalibrationResult& r, c
       << support::fixed(run.seconds, 1) << " s). Grid: " << spec.s_points << " slip ratios s in ["
       << g3(spec.s_min) << ", " << g3(spec.s_max) << "], " << spec.mu_points << " axis ratios mu in ["
       << g3(spec.mu_min) << ", 1], " << spec.psi_points
-      << " orientations, both signs of Omega. Errors per kN (F1, F2) and kNa (M); c is the pure-spin "
+      << " orientations, both signs of Omega. Errors per kN = k·N, the friction coefficient times the normal "
+         "force (F1, F2), and per kNa = k·N·a (M); c is the pure-spin "
          "torque per kNa the coefficient gives.\n\n";
   for (const Scope scope : {Scope::circle, Scope::grid}) {
     out << (scope == Scope::circle ? "**Circle** (mu = 1: a sphere on a plane)"

@@ -66,7 +66,7 @@ std::string report(const PuckStudyResults& r, const std::string& command) {
   for (const auto& row : r.theory)
     if (std::find(kappas.begin(), kappas.end(), row.kappa) == kappas.end()) kappas.push_back(row.kappa);
   o << "## 1. The terminal ratio predicted from each law (circular patch)\n\n"
-    << "The ratio r = v/(a ω) obeys d ln r/dt = (k g/v) G(r), G(r) = r μ(r)/κ − f(r) (f = F1/(kN), "
+    << "The ratio r = v/(a ω) obeys d ln r/dt = (k g/v) G(r), G(r) = r μ(r)/κ − f(r) (f = F1/(kN), kN = k·N = k m g, "
        "μ = M/(kNa), κ = I/(m a²)); near the end it settles on a zero r* of G with G' < 0 (slip and spin stop "
        "together), or goes to 0 (the slip stops first) or ∞ (the spin stops first). Each cell: r* with the "
        "exponent λ of the approach (r − r* ∝ v^λ), or → 0, → ∞, or \"depends\" (a repelling zero: the end depends "

@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <regex>
 #include <string>
 
 #include "tests/cli/cli_runner.h"
@@ -37,6 +38,20 @@ TEST(AccuracyCommand, TinyStudyWritesTheFiles) {
     EXPECT_TRUE(std::filesystem::exists(out / f)) << f;
   }
   std::filesystem::remove_all(out);
+}
+
+TEST(AccuracyCommand, ProgressLinesGiveTheUnitsOfTheErrors) {
+  // The errors are dimensionless multiples of k·N (F1, F2) and k·N·a (M): "F1 0.2" alone reads as
+  // 0.2 N, and kN as kilonewtons.
+  const auto out = temp_out("units");
+  const auto r = run_frictionlab("accuracy --out " + out.string() +
+                                 " --laws pade-printed --s-points 5 --mu-points 2 --psi-points 3 --no-plots");
+  std::filesystem::remove_all(out);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string number = "[-+0-9.e]+|inf|nan";
+  const std::regex line("(^|\n)accuracy: pade-printed: (" + number + ") s; max \\|error\\| F1 (" + number +
+                        ") k·N, F2 (" + number + ") k·N, M (" + number + ") k·N·a\n");
+  EXPECT_TRUE(std::regex_search(r.err, line)) << r.err;
 }
 
 TEST(AccuracyCommand, FigureTextShowsLawSpecsAsTheyAre) {

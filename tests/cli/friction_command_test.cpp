@@ -10,6 +10,7 @@
 #include <fstream>
 #include <memory>
 #include <numbers>
+#include <regex>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -43,6 +44,22 @@ TEST(LawsCommand, ListsEveryLawOnOneLineAndEachParameterBelowIt) {
   // any, one per parameter.
   EXPECT_EQ(r.out.rfind("Laws, and the parameters a spec NAME:KEY=VALUE[,KEY=VALUE] may set", 0), 0u) << r.out;
   EXPECT_EQ(count_lines(r.out), 1 + laws.size() + with_aliases + parameters);
+}
+
+TEST(LawsCommand, DefinesKnBeforeItsFirstUse) {
+  // The summaries write forces per kN: the first line that writes kN (as a word, or kNa) says
+  // what it is, k·N (friction coefficient times normal force), not kilonewtons.
+  const auto r = run_frictionlab("laws");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  std::istringstream lines(r.out);
+  const std::regex kn("(^|[^A-Za-z0-9_])kNa?([^A-Za-z0-9_]|$)");
+  for (std::string line; std::getline(lines, line);) {
+    if (!std::regex_search(line, kn)) continue;
+    EXPECT_NE(line.find("kN = k·N"), std::string::npos) << "the first kN is not defined: " << line;
+    EXPECT_NE(line.find("kNa = k·N·a"), std::string::npos) << line;
+    return;
+  }
+  ADD_FAILURE() << "no law summary writes kN any more: " << r.out;
 }
 
 TEST(LawsCommand, ListsEachLawOnceWithItsOtherNames) {
