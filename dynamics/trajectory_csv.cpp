@@ -17,15 +17,18 @@ std::array<double, kTrajectoryColumns.size()> trajectory_row(const Sample& s) {
   const ContactState& c = s.contact;
   const Eigen::Vector3d omega = angular_velocity(s.x);
   const Eigen::Vector3d v = velocity(s.x);
-  return {s.t,
-          c.gamma[0], c.gamma[1], c.gamma[2],
-          omega[0], omega[1], omega[2],
-          v[0], v[1], v[2],
-          height(s.x), c.N, c.U, c.Omega,
-          c.friction.F1, c.friction.F2, c.friction.M,
-          c.a, c.b, c.psi.radians(),
-          s.energy, s.kinetic, slide_work(s.x), spin_work(s.x),
-          c.in_contact ? 1.0 : 0.0};
+  std::array<double, kTrajectoryColumns.size()> row = {
+      s.t,
+      c.gamma[0], c.gamma[1], c.gamma[2],
+      omega[0], omega[1], omega[2],
+      v[0], v[1], v[2],
+      height(s.x), c.N, c.U, c.Omega,
+      c.friction.F1, c.friction.F2, c.friction.M,
+      c.a, c.b, c.psi.radians(),
+      s.energy, s.kinetic, slide_work(s.x), spin_work(s.x),
+      c.in_contact ? 1.0 : 0.0};
+  for (double& x : row) x = support::without_negative_zero(x);
+  return row;
 }
 
 std::string trajectory_header() {

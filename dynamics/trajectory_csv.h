@@ -20,7 +20,9 @@
 //   W_spin     J      work done against spinning friction so far, ∫ M Omega dt
 //   in_contact 0/1    eps < 0
 //
-// Numbers are written in the shortest form that reads back to the same double.
+// Numbers are written in the shortest form that reads back to the same double; a zero is written
+// "0" whatever its sign (support/number_format.h: the sign of a zero here is arithmetic residue,
+// F1 = -0 at pure spin, or gamma2 = -0, and "-0" reads as a negative number).
 //
 // The file only ever holds whole rows: rows are buffered (support::RecordFile, 64 KiB, ~140 rows;
 // a process killed from outside loses at most those) and a write that fails is cut back to the
@@ -45,8 +47,9 @@ inline constexpr std::array<std::string_view, 25> kTrajectoryColumns = {
     "v3", "eps",    "N",      "U",      "Omega",  "F1",     "F2",      "M",      "a",
     "b",  "psi",    "energy", "kinetic", "W_slide", "W_spin", "in_contact"};
 
-/// One row: the values of kTrajectoryColumns at sample `s` (in_contact as 0 or 1). The CSV writes
-/// these numbers; other sinks (the Python module's arrays) take them from here too.
+/// One row: the values of kTrajectoryColumns at sample `s` (in_contact as 0 or 1), as the CSV reads
+/// back (-0.0 as +0.0). The CSV writes these numbers; other sinks (the Python module's arrays) take
+/// them from here too, so they hold what the file holds, bit for bit.
 [[nodiscard]] std::array<double, kTrajectoryColumns.size()> trajectory_row(const Sample& s);
 
 /// The header line, "t,gamma1,...,in_contact\n".

@@ -177,7 +177,9 @@ std::string format_forces(const FrictionForces& f) {
 BatchSummary evaluate_csv(const std::vector<const FrictionLaw*>& laws, std::istream& in, std::ostream& out,
                           const BatchOptions& options) {
   if (laws.empty()) throw std::invalid_argument("no friction law given");
-  const bool law_column = laws.size() > 1;
+  // A message about a row names the law only when there are several (one law: the message is the
+  // law's own, as a single evaluation gives it).
+  const bool several = laws.size() > 1;
   // The law column's field per law, made once: the row loop allocates nothing.
   std::vector<std::string> law_field;
   for (const FrictionLaw* l : laws) law_field.push_back("," + csv_field(l->spec()));
@@ -222,7 +224,7 @@ BatchSummary evaluate_csv(const std::vector<const FrictionLaw*>& laws, std::istr
   std::optional<Spool> spool;
   if (options.on_error == OnError::stop) spool.emplace();
   std::ostream& dest = spool ? spool->stream() : out;
-  write_checked(dest, header + (law_column ? ",law" : "") + ",F1,F2,M\n");
+  write_checked(dest, header + "," + std::string(kOutputColumns) + "\n");
 
   BatchSummary summary;
   // Reused for every row: the loop allocates nothing once they have grown to the longest row.
@@ -237,7 +239,7 @@ BatchSummary evaluate_csv(const std::vector<const FrictionLaw*>& laws, std::istr
     for (std::size_t i = 0; i < laws.size(); ++i) {
       if (law && laws[i] != law) continue;
       row.assign(line);
-      if (law_column) row += law_field[i];
+      row += law_field[i];
       row += ",nan,nan,nan\n";
       write_checked(dest, row);
       ++summary.written;
@@ -268,11 +270,11 @@ BatchSummary evaluate_csv(const std::vector<const FrictionLaw*>& laws, std::istr
       try {
         forces = law->evaluate(input);
       } catch (const std::invalid_argument& e) {
-        bad_row(number, (law_column ? std::string(law->spec()) + ": " : std::string()) + e.what(), law);
+        bad_row(number, (several ? std::string(law->spec()) + ": " : std::string()) + e.what(), law);
         continue;
       }
       row.assign(line);
-      if (law_column) row += law_field[i];
+      row += law_field[i];
       row += ',';
       append_forces(row, forces);
       row += '\n';

@@ -280,7 +280,8 @@ void write_tables_markdown(std::ostream& out, const StudyResult& study, const Ru
       << ", " << short_number(g.s().back()) << "], " << g.mu().size() << " axis ratios μ = b/a over ["
       << short_number(g.mu().front()) << ", 1], " << g.psi().size()
       << " orientations ψ over [0°, 180°], both signs of Ω: " << g.size()
-      << " points per law. Errors are law − exact, per kN (F1, F2) and per kNa (M); max and RMS are "
+      << " points per law. Errors are law − exact, per kN = k·N, the friction coefficient times the normal force "
+         "(F1, F2), and per kNa = k·N·a (M); max and RMS are "
          "over the points where the law's output is finite (non-finite outputs are counted apart).\n\n";
 
   out << "## Overall errors\n\n";
@@ -393,7 +394,8 @@ void write_readme(std::ostream& out, const StudyResult& study, const RunInfo& ru
       << (run.date.empty() ? "" : " on " + run.date) << ". Every law is compared with `"
       << study.reference.law << "` at " << study.grid.size()
       << " dimensionless contacts: a = 1 m, b = μ m, U = s m/s, Ω = ±1 1/s, N = 1 N, k = 1, so F1 and F2 are in "
-         "units of kN, M in units of kNa and the power F1 U + M Ω in units of kN a|Ω|.\n\n"
+         "units of kN = k·N (the friction coefficient times the normal force), M in units of kNa = k·N·a and the "
+         "power F1 U + M Ω in units of kN a|Ω|.\n\n"
       << "Numbers have 10 significant digits; non-finite values are written nan, inf, -inf.\n\n"
       << "## Files\n\n"
       << (files.point_tables ? "* `points/<law>.csv`" : "* `points/<law>.csv` (not written by this run: add `--points`)")

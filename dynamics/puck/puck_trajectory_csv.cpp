@@ -9,6 +9,11 @@
 namespace frictionlab::dynamics::puck {
 namespace {
 
+// U/(a |Omega|), or nan where it is not defined (Omega = 0): a gap in a plot, not an infinity.
+double slip_ratio(const PuckContact& c, double a) {
+  return c.Omega != 0.0 ? c.U / (a * std::abs(c.Omega)) : std::numeric_limits<double>::quiet_NaN();
+}
+
 void put(std::string& line, double x) {
   support::append_shortest(line, x);
   line.push_back(',');
@@ -53,7 +58,7 @@ void PuckTrajectoryCsv::sample(const PuckSample& s) {
   put(line_, c.friction.F1);
   put(line_, c.friction.F2);
   put(line_, c.friction.M);
-  put(line_, c.Omega != 0.0 ? c.U / (a_ * std::abs(c.Omega)) : std::numeric_limits<double>::infinity());
+  put(line_, slip_ratio(c, a_));
   put(line_, s.energy);
   put(line_, slide_work(s.x));
   put(line_, spin_work(s.x));

@@ -12,7 +12,8 @@
 //   psi        rad    angle from the slip direction to the major axis, [0, pi)
 //   F1, F2     N      friction force, F = -F1 e1 - F2 e2
 //   M          N m    friction torque, -M z
-//   ratio      -      U/(a |Omega|) (inf when Omega = 0)
+//   ratio      -      U/(a |Omega|); nan when Omega = 0 (no spin, or the spin held: the slip ratio
+//                     is not defined; docs/puck.md §2)
 //   energy     J      kinetic energy m v^2/2 + I omega^2/2
 //   W_slide    J      work done against sliding friction so far
 //   W_spin     J      work done against spinning friction so far

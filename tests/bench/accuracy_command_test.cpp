@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <regex>
 #include <string>
 
 #include "tests/cli/cli_runner.h"
@@ -58,6 +59,39 @@ TEST(AccuracyCommand, TheDefaultStudyWritesUnder20MBAndNoPerPointTables) {
   EXPECT_LT(folder_bytes(out), 20'000'000u);
   const std::string readme = slurp(out / "README.md");
   EXPECT_NE(readme.find("not written by this run: add `--points`"), std::string::npos) << readme;
+  std::filesystem::remove_all(out);
+}
+
+TEST(AccuracyCommand, ProgressLinesGiveTheUnitsOfTheErrors) {
+  // The errors are dimensionless multiples of k·N (F1, F2) and k·N·a (M): "F1 0.2" alone reads as
+  // 0.2 N, and kN as kilonewtons.
+  const auto out = temp_out("units");
+  const auto r = run_frictionlab("accuracy --out " + out.string() +
+                                 " --laws pade-printed --s-points 5 --mu-points 2 --psi-points 3 --no-plots");
+  std::filesystem::remove_all(out);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string number = "[-+0-9.e]+|inf|nan";
+  const std::regex line("(^|\n)accuracy: pade-printed: (" + number + ") s; max \\|error\\| F1 (" + number +
+                        ") k·N, F2 (" + number + ") k·N, M (" + number + ") k·N·a\n");
+  EXPECT_TRUE(std::regex_search(r.err, line)) << r.err;
+}
+
+TEST(AccuracyCommand, FigureTextShowsLawSpecsAsTheyAre) {
+  // A law spec's '_' is markup to gnuplot's enhanced text: every title and key entry escapes it.
+  const auto out = temp_out("figure_text");
+  const auto r = run_frictionlab("accuracy --out " + out.string() +
+                                 " --laws decoupled:r_spin=0.001 --s-points 5 --mu-points 2 --psi-points 3 --no-plots");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  int scripts = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(out / "plots")) {
+    if (entry.path().extension() != ".gp") continue;
+    ++scripts;
+    std::ifstream in(entry.path());
+    const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    EXPECT_NE(text.find("decoupled:r\\_spin=0.001"), std::string::npos) << entry.path() << "\n" << text;
+    EXPECT_EQ(text.find("decoupled:r_spin"), std::string::npos) << entry.path() << "\n" << text;
+  }
+  EXPECT_GE(scripts, 2);
   std::filesystem::remove_all(out);
 }
 
