@@ -12,6 +12,7 @@
 #include "dynamics/scenario_limits.h"
 #include "dynamics/scenario_toml.h"
 #include "friction/registry.h"
+#include "friction/support/checked_input.h"
 #include "friction/support/errors.h"
 #include "friction/support/number_format.h"
 
@@ -154,15 +155,7 @@ ScenarioDocument ScenarioDocument::parse(std::string_view toml_text, const std::
 }
 
 ScenarioDocument ScenarioDocument::read(const std::filesystem::path& file) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(file, ec))
-    fail("scenario file '" + file.string() + "' is a folder: give the path of a .toml file");
-  std::ifstream in(file, std::ios::binary);
-  if (!in) fail("cannot read scenario file '" + file.string() + "': " + std::strerror(errno));
-  std::stringstream buf;
-  buf << in.rdbuf();
-  if (in.bad()) fail("cannot read scenario file '" + file.string() + "': " + std::strerror(errno));
-  return parse(buf.str(), file.string());
+  return parse(support::read_file(file, "scenario file"), file.string());
 }
 
 Scenario ScenarioDocument::resolve(const std::vector<std::string>& overrides) const {

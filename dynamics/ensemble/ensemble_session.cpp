@@ -4,6 +4,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "friction/support/checked_input.h"
 #include "friction/support/checked_output.h"
 #include "friction/support/json.h"
 
@@ -18,10 +19,11 @@ std::vector<std::string> keys_of(const Study& s) {
 
 // The hash recorded in DIR/ensemble.json, or empty if there is none.
 std::string recorded_hash(const std::filesystem::path& manifest) {
-  std::ifstream in(manifest, std::ios::binary);
-  if (!in) return "";
+  std::error_code ec;
+  if (!std::filesystem::exists(manifest, ec)) return "";
+  const std::string text = support::read_file(manifest, "ensemble manifest");
   try {
-    const auto j = support::Json::parse(in);
+    const auto j = support::Json::parse(text);
     return j.at("hash").get<std::string>();
   } catch (const std::exception& e) {
     throw std::invalid_argument(manifest.string() + " is not an ensemble manifest (" + e.what() + ")");

@@ -13,6 +13,7 @@
 #include <stdexcept>
 
 #include "dynamics/ensemble/variant.h"
+#include "friction/support/checked_input.h"
 #include "friction/support/errors.h"
 #include "friction/support/number_format.h"
 
@@ -297,15 +298,7 @@ Study parse_study(std::string_view text, const std::filesystem::path& source, co
 }
 
 Study read_study(const std::filesystem::path& file) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(file, ec))
-    throw std::invalid_argument("study file '" + file.string() + "' is a folder: give the path of a .toml file");
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw std::invalid_argument("cannot read study file '" + file.string() + "': " + std::strerror(errno));
-  std::stringstream buf;
-  buf << in.rdbuf();
-  if (in.bad()) throw std::invalid_argument("cannot read study file '" + file.string() + "': " + std::strerror(errno));
-  return parse_study(buf.str(), file, file.parent_path());
+  return parse_study(support::read_file(file, "study file"), file, file.parent_path());
 }
 
 }  // namespace frictionlab::dynamics::ensemble

@@ -88,6 +88,16 @@ TEST(DynSimulateCommand, BadInputGivesOneLineAndNonZeroExit) {
   EXPECT_FALSE(std::filesystem::exists(dir / "summary.json"));
 }
 
+// A file whose read fails (reading /proc/self/mem at offset 0 is EIO) was taken for an empty
+// scenario ("section [body] is required"): the error names the file and the system's reason.
+TEST(DynSimulateCommand, AFailedReadIsReportedAsSuchNotAsAnEmptyFile) {
+  const auto dir = fresh_dir("eio");
+  const auto r = run_frictionlab("simulate /proc/self/mem --out " + dir.string());
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(r.err, "frictionlab: error: reading scenario file '/proc/self/mem' failed: Input/output error\n");
+  EXPECT_FALSE(std::filesystem::exists(dir));
+}
+
 // Whole rows only: every line of the CSV ends in a newline and has every column.
 void expect_whole_rows(const std::string& csv) {
   ASSERT_FALSE(csv.empty());

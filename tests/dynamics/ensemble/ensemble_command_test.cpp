@@ -216,5 +216,14 @@ TEST(EnsembleCommand, BadStudiesAndOptionsAreOneLineAndWriteNothing) {
   fs::remove_all(dir);
 }
 
+// A read that fails (EIO) was taken for an empty study; the error says the read failed.
+TEST(EnsembleCommand, AFailedReadOfTheStudyIsReportedAsSuch) {
+  const fs::path dir = fresh_dir("eio");
+  const auto r = run_frictionlab("ensemble /proc/self/mem --out " + (dir / "out").string());
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(r.err, "frictionlab: error: reading study file '/proc/self/mem' failed: Input/output error\n");
+  EXPECT_FALSE(fs::exists(dir / "out"));
+}
+
 }  // namespace
 }  // namespace frictionlab
