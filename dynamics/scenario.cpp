@@ -11,6 +11,7 @@
 #include "dynamics/patch_model.h"
 #include "dynamics/scenario_limits.h"
 #include "dynamics/scenario_toml.h"
+#include "dynamics/toml_document.h"
 #include "friction/registry.h"
 #include "friction/support/checked_input.h"
 #include "friction/support/errors.h"
@@ -144,13 +145,7 @@ ScenarioDocument::ScenarioDocument(std::shared_ptr<const Parsed> parsed, std::st
 
 ScenarioDocument ScenarioDocument::parse(std::string_view toml_text, const std::string& source) {
   auto parsed = std::make_shared<Parsed>();
-  try {
-    parsed->root = toml::parse(toml_text, source);
-  } catch (const toml::parse_error& e) {
-    std::ostringstream m;
-    m << source << ":" << e.source().begin.line << ":" << e.source().begin.column << ": " << e.description();
-    fail(m.str());
-  }
+  parsed->root = parse_toml(toml_text, source);
   return ScenarioDocument(std::move(parsed), source);
 }
 

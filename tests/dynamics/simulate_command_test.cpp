@@ -5,6 +5,7 @@
 #include <csignal>
 #include <algorithm>
 #include <filesystem>
+#include <fstream>
 #include <sstream>
 #include <string>
 
@@ -96,6 +97,28 @@ TEST(DynSimulateCommand, AFailedReadIsReportedAsSuchNotAsAnEmptyFile) {
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_EQ(r.err, "frictionlab: error: reading scenario file '/proc/self/mem' failed: Input/output error\n");
   EXPECT_FALSE(std::filesystem::exists(dir));
+}
+
+// A table nested 40000 deep crashed the command (toml++ recursed out of the stack, SIGSEGV); it
+// is one error line naming the rule (dynamics/toml_nesting.h), for a file and for a --set.
+TEST(DynSimulateCommand, ADeeplyNestedScenarioIsOneErrorLineNotACrash) {
+  const auto dir = fresh_dir("deep");
+  std::filesystem::create_directories(dir);
+  std::string dotted = "a";
+  for (int i = 1; i < 40000; ++i) dotted += ".a";
+  { std::ofstream(dir / "deep.toml") << "[" << dotted << "]\nx = 1\n"; }
+  const auto r = run_frictionlab("simulate " + (dir / "deep.toml").string() + " --out " + (dir / "out").string());
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_EQ(r.err.rfind("frictionlab: error: " + (dir / "deep.toml").string() + ":1: nested more than 64 levels deep", 0),
+            0u)
+      << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  const auto set = run_frictionlab("simulate " + kScenarios + "sphere-spinning.toml --set " + dotted +
+                                   "=1 --out " + (dir / "out").string());
+  EXPECT_EQ(set.exit_code, 1) << set.err;
+  EXPECT_NE(set.err.find("nested more than 64 levels deep"), std::string::npos) << set.err.substr(0, 200);
+  EXPECT_FALSE(std::filesystem::exists(dir / "out"));
+  std::filesystem::remove_all(dir);
 }
 
 // Whole rows only: every line of the CSV ends in a newline and has every column.
