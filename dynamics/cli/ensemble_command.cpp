@@ -13,6 +13,7 @@
 #include <string>
 
 #include "dynamics/cli/commands.h"
+#include "dynamics/cli/option_values.h"
 #include "dynamics/ensemble/ensemble_job.h"
 #include "friction/support/errors.h"
 #include "friction/support/interrupt_guard.h"
@@ -26,7 +27,7 @@ constexpr int kExitIncomplete = 3;
 struct EnsembleCliOptions {
   std::string study;
   std::string out;
-  int threads = 0;
+  long long threads = 0;
   bool resume = false;
   bool hdf5 = false;
   bool no_figures = false;
@@ -34,7 +35,8 @@ struct EnsembleCliOptions {
 
 void run(const EnsembleCliOptions& opt) {
   namespace ens = dynamics::ensemble;
-  ens::JobOptions job = ens::ensemble_job_options(opt.study, opt.out, opt.threads, opt.resume, opt.hdf5, !opt.no_figures);
+  ens::JobOptions job = ens::ensemble_job_options(opt.study, opt.out, int_option("--threads", opt.threads), opt.resume,
+                                                  opt.hdf5, !opt.no_figures);
   job.log = stderr;
   job.live = isatty(STDERR_FILENO) != 0;
   ens::JobOutcome outcome;

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "dynamics/cli/commands.h"
+#include "dynamics/cli/option_values.h"
 #include "friction/support/checked_output.h"
 #include "friction/support/errors.h"
 
@@ -104,6 +105,7 @@ int main(int argc, char** argv) {
   frictionlab::cli::register_calibrate_command(app);
   frictionlab::cli::register_puck_study_command(app);
   frictionlab::cli::register_tippe_top_command(app);
+  frictionlab::cli::check_option_values(app);  // after every option exists
   // A file-size limit (ulimit -f) is then an error of the write that hits it, reported like a
   // full disk, instead of a signal that kills the process mid-row.
   std::signal(SIGXFSZ, SIG_IGN);
