@@ -118,7 +118,8 @@ void register_paper_command(CLI::App& app) {
                 "Keep every sample in trajectory.csv (default: every " + std::to_string(paper::kTrajectoryEvery) +
                     "th, 0.1 s; about 10x the disk)");
   cmd->add_flag("--resume", opt->resume,
-                "Keep the runs an earlier job in --out completed with the same scenario; redo the others");
+                "Keep the runs an earlier job in --out completed with the same scenario; redo the others (one job "
+                "per folder: a folder another job holds is refused)");
   cmd->callback([opt] {
     opt->command = "frictionlab paper";
     for (const auto& [name, value] : std::vector<std::pair<std::string, std::string>>{

@@ -60,6 +60,8 @@ EnsembleSession::EnsembleSession(const EnsemblePlan& plan, SessionOptions option
   std::error_code ec;
   if (std::filesystem::exists(dir, ec) && !std::filesystem::is_directory(dir, ec))
     throw std::invalid_argument("--out " + dir.string() + " is not a folder");
+  // Before runs.csv is read: two jobs resuming one folder would both redo the runs it lacks.
+  lock_ = std::make_unique<support::FolderLock>(dir);
   bool resume = false;
   ExistingRuns existing;
   if (std::filesystem::exists(runs)) {
@@ -73,8 +75,6 @@ EnsembleSession::EnsembleSession(const EnsemblePlan& plan, SessionOptions option
     existing = read_existing_runs(runs, header, plan.runs());
     resume = true;
   }
-  std::filesystem::create_directories(dir, ec);
-  if (ec) throw support::OutputError("cannot create the output folder '" + dir.string() + "': " + ec.message());
   if (!resume) support::write_file_atomically(manifest, manifest_text(plan, options_.command));
   writer_ = std::make_unique<RunsWriter>(runs, header, resume);
   if (options_.trajectories) trajectories_ = open_trajectory_store(dir, resume);

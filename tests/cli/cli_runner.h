@@ -88,9 +88,10 @@ inline CommandResult wait_for(pid_t pid, const std::filesystem::path& out, const
   return r;
 }
 
+// Not run_frictionlab's file: a test may run a command while a spawned one runs.
 inline std::filesystem::path capture_file(const char* what) {
   return std::filesystem::temp_directory_path() /
-         ("frictionlab_test_" + std::string(what) + "_" + std::to_string(::getpid()));
+         ("frictionlab_test_spawned_" + std::string(what) + "_" + std::to_string(::getpid()));
 }
 
 }  // namespace detail
