@@ -16,6 +16,7 @@
 #include "dynamics/cli/option_values.h"
 #include "dynamics/ensemble/ensemble_job.h"
 #include "dynamics/ensemble/mpi_ensemble.h"
+#include "dynamics/shipped_data.h"
 #include "friction/support/errors.h"
 #include "friction/support/interrupt_guard.h"
 #include "friction/support/number_format.h"
@@ -36,7 +37,8 @@ struct EnsembleCliOptions {
 
 void run(const EnsembleCliOptions& opt) {
   namespace ens = dynamics::ensemble;
-  ens::JobOptions job = ens::ensemble_job_options(opt.study, opt.out, int_option("--threads", opt.threads), opt.resume,
+  const std::string study = dynamics::find_shipped_file(opt.study, "studies", "study").string();
+  ens::JobOptions job = ens::ensemble_job_options(study, opt.out, int_option("--threads", opt.threads), opt.resume,
                                                   opt.hdf5, !opt.no_figures);
   job.log = stderr;
   job.live = isatty(STDERR_FILENO) != 0;
@@ -106,7 +108,10 @@ void register_ensemble_command(CLI::App& app) {
   auto* cmd = app.add_subcommand(
       "ensemble", "Run a study: every (start x replica x law) run on all cores, or over MPI ranks under mpirun; "
                   "runs.csv and a report against the chaos floor (docs/ensembles.md)");
-  cmd->add_option("study", opt->study, "The study file (TOML)")->required();
+  cmd->add_option("study", opt->study,
+                  "The study file (TOML), or the name of a shipped one (smoke, egg-printed-a, ...: looked up in "
+                  "data/studies here, then the installed data)")
+      ->required();
   cmd->add_option("--out", opt->out, "Output folder (created if needed)")->required();
   cmd->add_option("--threads", opt->threads, "Worker threads (default 0: one per core; under MPI, of rank 0: 1)");
   cmd->add_flag("--resume", opt->resume,

@@ -122,5 +122,12 @@ TEST(CliMain, OutOfRangeNumbersAndEmptyValuesAreErrorsNotClampsOrDefaults) {
   EXPECT_FALSE(std::filesystem::exists(never));
 }
 
+TEST(CliMain, VersionPrintsTheProjectVersion) {
+  const auto r = run_frictionlab("--version");
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.out, "frictionlab " FRICTIONLAB_PROJECT_VERSION "\n");  // CMake's project(VERSION)
+  EXPECT_TRUE(r.err.empty()) << r.err;
+}
+
 }  // namespace
 }  // namespace frictionlab::testing

@@ -121,6 +121,43 @@ TEST(DynSimulateCommand, ADeeplyNestedScenarioIsOneErrorLineNotACrash) {
   std::filesystem::remove_all(dir);
 }
 
+// The installed command finds the shipped scenarios by name from any folder (here the build's:
+// the source tree's data/), with or without .toml; an existing path of that name wins.
+TEST(DynSimulateCommand, AShippedScenarioIsFoundByNameFromAnyFolder) {
+  const auto dir = fresh_dir("by_name");
+  std::filesystem::create_directories(dir);
+  for (const std::string name : {"sphere-sliding", "sphere-sliding.toml"}) {
+    const auto r = run_frictionlab("simulate " + name + " --set run.t_end=0.01 --out out", dir);
+    ASSERT_EQ(r.exit_code, 0) << name << ": " << r.err;
+    const auto json = nlohmann::json::parse(slurp(dir / "out" / "summary.json"));
+    EXPECT_EQ(json["scenario"]["name"], "sphere-sliding");
+    EXPECT_EQ(std::filesystem::weakly_canonical(json["scenario"]["source"].get<std::string>()),
+              std::filesystem::weakly_canonical(kScenarios + "sphere-sliding.toml"));
+  }
+  // A file of that name in the working folder is what the user means.
+  std::filesystem::copy_file(kScenarios + "sphere-spinning.toml", dir / "sphere-sliding.toml");
+  const auto own = run_frictionlab("simulate sphere-sliding.toml --set run.t_end=0.01 --out own", dir);
+  ASSERT_EQ(own.exit_code, 0) << own.err;
+  EXPECT_EQ(nlohmann::json::parse(slurp(dir / "own" / "summary.json"))["scenario"]["name"], "sphere-spinning");
+  std::filesystem::remove_all(dir);
+}
+
+TEST(DynSimulateCommand, AnUnknownNameSaysWhereItLooked) {
+  const auto dir = fresh_dir("unknown_name");
+  std::filesystem::create_directories(dir);
+  const auto r = run_frictionlab("simulate no-such-scenario --out out", dir);
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(r.err.rfind("frictionlab: error: scenario 'no-such-scenario' not found: no file 'no-such-scenario' here, "
+                        "and no no-such-scenario or no-such-scenario.toml in data/scenarios, ",
+                        0),
+            0u)
+      << r.err;
+  EXPECT_NE(r.err.find(kScenarios.substr(0, kScenarios.size() - 1)), std::string::npos) << "the source tree's: " << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "out"));
+  std::filesystem::remove_all(dir);
+}
+
 // Whole rows only: every line of the CSV ends in a newline and has every column.
 void expect_whole_rows(const std::string& csv) {
   ASSERT_FALSE(csv.empty());

@@ -226,6 +226,24 @@ TEST(EnsembleCommand, AFailedReadOfTheStudyIsReportedAsSuch) {
   EXPECT_FALSE(fs::exists(dir / "out"));
 }
 
+// The shipped studies are found by name from any folder (dynamics/shipped_data.h).
+TEST(EnsembleCommand, AShippedStudyIsFoundByName) {
+  const fs::path dir = fresh_dir("by_name");
+  fs::create_directories(dir);
+  const auto r = run_frictionlab("ensemble smoke --out out --no-figures", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("8 of 8 runs done"), std::string::npos) << r.out;
+  EXPECT_NE(slurp(dir / "out" / "ensemble.json").find("\"study\": \"smoke\""), std::string::npos);
+  const auto missing = run_frictionlab("ensemble no-such-study --out out2", dir);
+  EXPECT_EQ(missing.exit_code, 1);
+  EXPECT_EQ(missing.err.rfind("frictionlab: error: study 'no-such-study' not found: no file 'no-such-study' here, and "
+                              "no no-such-study or no-such-study.toml in data/studies, ",
+                              0),
+            0u)
+      << missing.err;
+  fs::remove_all(dir);
+}
+
 // Two --resume jobs on one folder both redid the runs it lacked: the folder is held by its job
 // (support/folder_lock.h), and a second job is one line naming the folder and the holder's pid.
 TEST(EnsembleCommand, AFolderInUseByAnotherJobIsRefusedNamingTheHolder) {
