@@ -1,7 +1,10 @@
 #include "dynamics/scenario_toml.h"
 
+#include <algorithm>
 #include <sstream>
 
+#include "dynamics/toml_document.h"
+#include "dynamics/toml_nesting.h"
 #include "friction/registry.h"
 #include "friction/support/errors.h"
 
@@ -129,14 +132,15 @@ void apply_override(toml::table& root, const std::string& assignment) {
     fail("override '" + assignment + "' must have the form key=value (e.g. run.t_end=2)");
   const std::string key = assignment.substr(0, eq);
   const std::string value = assignment.substr(eq + 1);
+  // The key's parts nest as tables ([run] t_end: 2 levels), the value may nest further: the
+  // scenario after the override must still read back (dynamics/toml_nesting.h).
+  const std::string holder_text = "v = " + value;
+  const auto key_parts = static_cast<int>(std::count(key.begin(), key.end(), '.')) + 1;
+  check_toml_nesting(key_parts - 1 + toml_nesting(holder_text).depth, "the key and value");
   // Parse the value as TOML; if that fails it is a bare string (e.g. contact.law=exact).
-  toml::table holder;
-  try {
-    holder = toml::parse("v = " + value);
-  } catch (const toml::parse_error&) {
-    holder = toml::table{};
-    holder.insert("v", value);
-  }
+  std::optional<toml::table> parsed = try_parse_toml(holder_text, "the value");
+  toml::table holder = parsed ? std::move(*parsed) : toml::table{};
+  if (!parsed) holder.insert("v", value);
   toml::table* t = &root;
   std::string::size_type start = 0;
   for (;;) {

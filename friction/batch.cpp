@@ -139,8 +139,13 @@ class Spool {
   std::fstream file_;
 };
 
-void check_read(const std::istream& in) {
-  if (in.bad()) throw std::runtime_error("cannot read the input");
+// A read that failed is not the end of the table. The stream keeps no reason: errno, cleared before
+// each read, holds the system's (EIO, ...).
+void check_read(const std::istream& in, const std::string& name) {
+  if (in.bad()) {
+    throw std::runtime_error("reading " + name + " failed" +
+                             (errno != 0 ? std::string(": ") + std::strerror(errno) : std::string()));
+  }
 }
 
 }  // namespace
@@ -188,7 +193,7 @@ BatchSummary evaluate_csv(const std::vector<const FrictionLaw*>& laws, std::istr
   std::string header;
   std::size_t number = 0;
   bool found = false;
-  while (std::getline(in, header)) {
+  for (errno = 0; std::getline(in, header); errno = 0) {
     ++number;
     if (number == 1 && std::string_view(header).substr(0, kByteOrderMark.size()) == kByteOrderMark) {
       header.erase(0, kByteOrderMark.size());
@@ -199,7 +204,7 @@ BatchSummary evaluate_csv(const std::vector<const FrictionLaw*>& laws, std::istr
       break;
     }
   }
-  check_read(in);
+  check_read(in, options.input_name);
   if (!found) throw std::invalid_argument("input is empty: expected a CSV header");
   const std::size_t header_line = number;
   const auto names = split_csv_line(header);
@@ -245,7 +250,7 @@ BatchSummary evaluate_csv(const std::vector<const FrictionLaw*>& laws, std::istr
       ++summary.written;
     }
   };
-  while (std::getline(in, line)) {
+  for (errno = 0; std::getline(in, line); errno = 0) {
     ++number;
     if (!line.empty() && line.back() == '\r') line.pop_back();
     if (trim(line).empty()) continue;
@@ -282,7 +287,7 @@ BatchSummary evaluate_csv(const std::vector<const FrictionLaw*>& laws, std::istr
       ++summary.written;
     }
   }
-  check_read(in);
+  check_read(in, options.input_name);
   if (spool) spool->copy_to(out);
   flush_checked(out);
   return summary;

@@ -55,6 +55,8 @@ struct BatchOptions {
   OnError on_error = OnError::stop;
   /// With skip or nan, called once per bad row with its line number and the reason (one line).
   std::function<void(std::size_t line, const std::string& reason)> on_bad_row;
+  /// The input in messages: a read that fails part-way is "reading INPUT_NAME failed: REASON".
+  std::string input_name = "the input";
 };
 
 struct BatchSummary {

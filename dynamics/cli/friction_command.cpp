@@ -7,7 +7,6 @@
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -18,6 +17,7 @@
 #include "dynamics/cli/commands.h"
 #include "friction/batch.h"
 #include "friction/registry.h"
+#include "friction/support/checked_input.h"
 
 namespace frictionlab::cli {
 namespace {
@@ -80,16 +80,19 @@ void run_table(const std::vector<const friction::FrictionLaw*>& laws, const std:
       std::cerr << "frictionlab: warning: input line " << line << ": " << reason << what << '\n';
     }
   };
-  friction::BatchSummary summary;
-  if (path == "-") {
-    summary = friction::evaluate_csv(laws, std::cin, std::cout, options);
-  } else {
-    std::error_code ec;
-    if (std::filesystem::is_directory(path, ec)) throw std::invalid_argument("the input " + path + " is a directory");
-    std::ifstream file(path);
-    if (!file) throw std::invalid_argument("cannot open the input " + path + ": " + std::strerror(errno));
-    summary = friction::evaluate_csv(laws, file, std::cout, options);
+  std::error_code ec;
+  if (path != "-" && std::filesystem::is_directory(path, ec))
+    throw std::invalid_argument("the input " + path + " is a directory");
+  // Read through read(2), stdin too: std::cin, synced with stdio, takes a read error for the end
+  // of the table (support/checked_input.h).
+  std::unique_ptr<support::InputStream> in;
+  try {
+    in = std::make_unique<support::InputStream>(path, "input");
+  } catch (const support::InputError& e) {
+    throw std::invalid_argument("cannot open the input " + path + ": " + std::strerror(e.error_number()));
   }
+  options.input_name = path == "-" ? "standard input" : "the input '" + path + "'";
+  const friction::BatchSummary summary = friction::evaluate_csv(laws, *in, std::cout, options);
   if (summary.bad > kMaxWarnings) {
     std::cerr << "frictionlab: warning: " << summary.bad << " bad rows in all (the first " << kMaxWarnings
               << " shown above)\n";

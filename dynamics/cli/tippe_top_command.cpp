@@ -11,6 +11,7 @@
 #include "dynamics/cli/commands.h"
 #include "dynamics/cli/retypable_command.h"
 #include "dynamics/paper/experiment_plan.h"
+#include "dynamics/shipped_data.h"
 #include "dynamics/tippe_top/tippe_top_study.h"
 #include "dynamics/tippe_top/tippe_top_study_report.h"
 #include "friction/support/number_format.h"
@@ -32,7 +33,7 @@ void run(const TippeTopCommandOptions& opt, const std::string& command) {
   if (!opt.laws.empty()) so.laws = friction::split_law_list(opt.laws);
   so.max_steps = opt.max_steps;
   so.scenario = opt.scenario.empty() ? dynamics::paper::default_scenario_dir() / "tippe-top.toml"
-                                     : std::filesystem::path(opt.scenario);
+                                     : dynamics::find_shipped_file(opt.scenario, "scenarios", "scenario");
   const auto results = dynamics::tippe_top::run_tippe_top_study(so);
   const auto problems = dynamics::tippe_top::write_tippe_top_study(results, opt.out, command, !opt.no_plots);
   for (const auto& p : problems) std::cerr << "frictionlab: tippe-top: " << p << std::endl;
@@ -51,7 +52,8 @@ void register_tippe_top_command(CLI::App& app) {
   cmd->add_option("--laws", opt->laws,
                   "law specs, separated by ';' or ',' (default: every registered law that is not slow, and decoupled, "
                   "decoupled:r_spin=0 where the registry has them)");
-  cmd->add_option("--scenario", opt->scenario, "the tippe-top scenario (default: the shipped tippe-top.toml)");
+  cmd->add_option("--scenario", opt->scenario,
+                  "the tippe-top scenario: a file, or a shipped scenario's name (default: the shipped tippe-top.toml)");
   cmd->add_option("--max-steps", opt->max_steps, "accepted steps allowed per run (a chattering law ends max-steps)");
   cmd->add_flag("--no-plots", opt->no_plots, "write the gnuplot data and scripts but do not run gnuplot");
   cmd->callback([opt, cmd] { run(*opt, retypable_command(*cmd)); });

@@ -19,6 +19,7 @@
 #include "dynamics/ensemble/outcome_map.h"
 #include "dynamics/ensemble/sample_statistics.h"
 #include "dynamics/paper/experiment_report.h"
+#include "friction/support/checked_input.h"
 #include "friction/support/checked_output.h"
 #include "friction/support/number_format.h"
 
@@ -281,8 +282,7 @@ void cost_section(std::ostringstream& s, const std::vector<std::string>& laws, c
 }  // namespace
 
 std::vector<RunRecord> read_runs(const std::filesystem::path& runs_csv, std::size_t key_count, RunModel model) {
-  std::ifstream in(runs_csv, std::ios::binary);
-  if (!in) throw std::invalid_argument("cannot read '" + runs_csv.string() + "'");
+  std::istringstream in(support::read_file(runs_csv, "runs file"));
   std::string line;
   std::getline(in, line);  // header
   std::vector<RunRecord> rows;

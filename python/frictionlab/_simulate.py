@@ -5,7 +5,7 @@ import os
 import tempfile
 
 from . import _core
-from ._toml import to_toml, toml_value
+from ._toml import check_nesting, nesting, to_toml, toml_value
 
 __all__ = ["simulate", "SimulationResult", "Interrupted"]
 
@@ -77,6 +77,8 @@ def _override_list(overrides):
     if overrides is None:
         return []
     if isinstance(overrides, dict):
+        for k, v in overrides.items():  # the key's parts and the value nest (--set checks the same)
+            check_nesting(str(k).count(".") + 1 + nesting(v), f"override {k}")
         return [f"{k}={toml_value(v, k)}" for k, v in overrides.items()]
     if isinstance(overrides, str):
         return [overrides]

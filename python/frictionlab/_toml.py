@@ -9,7 +9,7 @@ text that round-trips), integers as integers. Only what a scenario holds is acce
 import math
 import numbers
 
-__all__ = ["to_toml", "toml_value"]
+__all__ = ["to_toml", "toml_value", "nesting", "check_nesting"]
 
 # TOML integers are 64-bit signed: a larger Python int would fail in the parser, which could
 # only name a line of the generated text; it is refused here, naming the key.
@@ -76,6 +76,33 @@ def toml_value(v, where="value"):
                     f"booleans, numbers and lists of them")
 
 
+def nesting(value):
+    """How many levels a value nests as TOML (dynamics/toml_nesting.h): each dict key and each
+    list item one level below its container ({"run": {"t_end": 1}} is 2). Without recursion, so
+    that any depth is measured."""
+    deepest = 0
+    todo = [(value, 0)]
+    while todo:
+        v, depth = todo.pop()
+        if isinstance(v, dict):
+            items = v.values()
+        elif isinstance(v, (list, tuple)):
+            items = v
+        else:
+            continue
+        for item in items:
+            deepest = max(deepest, depth + 1)
+            todo.append((item, depth + 1))
+    return deepest
+
+
+def check_nesting(depth, where):
+    """ValueError, as for a TOML file, if `depth` levels are too many to read back."""
+    from . import _core  # the rule lives in the C++ reader
+
+    _core._check_toml_nesting(depth, where)
+
+
 def _table(d, path, lines):
     scalars = [(k, v) for k, v in d.items() if not isinstance(v, dict)]
     tables = [(k, v) for k, v in d.items() if isinstance(v, dict)]
@@ -93,6 +120,7 @@ def to_toml(scenario):
     """TOML text of a scenario dict such as ``{"body": {...}, "contact": {...}, "run": {...}}``."""
     if not isinstance(scenario, dict):
         raise TypeError(f"a scenario must be a dict or a path, not {type(scenario).__name__}")
+    check_nesting(nesting(scenario), "the scenario dict")  # before _table recurses into it
     lines = []
     _table(scenario, [], lines)
     return "\n".join(lines) + "\n"

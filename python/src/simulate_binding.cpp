@@ -17,6 +17,7 @@
 #include "file_errors.h"
 #include "dynamics/scenario.h"
 #include "dynamics/scenario_run.h"
+#include "dynamics/toml_nesting.h"
 #include "dynamics/trajectory_csv.h"
 
 namespace frictionlab::python {
@@ -128,6 +129,13 @@ Internal: frictionlab.simulate() calls it. Reads the scenario file `path` (or pa
 in_contact bool) and the exception that stopped the run (KeyboardInterrupt, or one raised by
 `progress(t, t_end)`), or None. `interval` (s of wall time) is how often signals are checked
 and progress is called.)doc");
+  m.def(
+      "_check_toml_nesting", [](int depth, const std::string& where) { dynamics::check_toml_nesting(depth, where); },
+      py::arg("depth"), py::arg("where"),
+      R"doc(_check_toml_nesting(depth, where)
+
+Internal: raises ValueError (the message of a TOML file nested as deeply) if `depth` levels are
+more than a scenario may nest (dynamics/toml_nesting.h). to_toml() asks before it writes a dict.)doc");
 }
 
 }  // namespace frictionlab::python

@@ -150,3 +150,31 @@ def test_ctrl_c_stops_the_run_and_keeps_what_ran(scenarios, tmp_path):
     with open(tmp_path / "summary.json") as f:
         assert json.load(f)["termination"]["reason"] == "interrupted"
     assert_same_trajectory(result, read_csv_columns(tmp_path / "trajectory.csv"))
+
+
+DEEP = 40000  # toml++ recursed out of the stack at this depth and the interpreter died
+
+
+def test_deeply_nested_input_raises_value_error_not_a_crash(scenarios, tmp_path):
+    rule = "nested more than 64 levels deep"
+    dotted = ".".join(["a"] * DEEP)
+    for name, text in [("table", f"[{dotted}]\nx = 1\n"), ("dotted", f"{dotted} = 1\n"),
+                       ("arrays", "x = " + "[" * DEEP + "]" * DEEP + "\n")]:
+        path = tmp_path / f"{name}.toml"
+        path.write_text(text)
+        with pytest.raises(ValueError, match=rule):
+            frictionlab.simulate(path)
+    # A dict nested as deeply is refused before it is written as TOML (whose writer recurses).
+    deep = {"x": 1}
+    for _ in range(DEEP):
+        deep = {"a": deep}
+    with pytest.raises(ValueError, match="the scenario dict: " + rule):
+        frictionlab.simulate(deep)
+    nested_list = 1
+    for _ in range(DEEP):
+        nested_list = [nested_list]
+    path = os.path.join(scenarios, "sphere-sliding.toml")
+    with pytest.raises(ValueError, match="override run.x: " + rule):
+        frictionlab.simulate(path, overrides={"run.x": nested_list})
+    with pytest.raises(ValueError, match=rule):
+        frictionlab.simulate(path, overrides=[dotted + "=1"])

@@ -358,6 +358,10 @@ TEST(FrictionCommand, InputProblemsAreOneLine) {
       {"friction " + dir.string(), dir.string() + " is a directory"},
       {"friction --U 1 " + file.path.string(), "give either one contact (--U ... --k) or an input table, not both"},
       {"friction --input " + file.path.string() + " " + file.path.string(), "the input is given twice"},
+      // A read that fails (EIO) is neither an empty table nor the end of one: it names the file and why.
+      {"friction /proc/self/mem", "frictionlab: error: reading the input '/proc/self/mem' failed: Input/output error"},
+      // Standard input too (a folder as stdin: read(2) fails with EISDIR), where std::cin said "empty".
+      {"friction - </", "frictionlab: error: reading standard input failed: Is a directory"},
   };
   for (const auto& c : cases) {
     const auto r = run_frictionlab(c.args);

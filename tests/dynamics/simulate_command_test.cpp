@@ -5,6 +5,7 @@
 #include <csignal>
 #include <algorithm>
 #include <filesystem>
+#include <fstream>
 #include <sstream>
 #include <string>
 
@@ -86,6 +87,75 @@ TEST(DynSimulateCommand, BadInputGivesOneLineAndNonZeroExit) {
     EXPECT_TRUE(r.out.empty()) << r.out;
   }
   EXPECT_FALSE(std::filesystem::exists(dir / "summary.json"));
+}
+
+// A file whose read fails (reading /proc/self/mem at offset 0 is EIO) was taken for an empty
+// scenario ("section [body] is required"): the error names the file and the system's reason.
+TEST(DynSimulateCommand, AFailedReadIsReportedAsSuchNotAsAnEmptyFile) {
+  const auto dir = fresh_dir("eio");
+  const auto r = run_frictionlab("simulate /proc/self/mem --out " + dir.string());
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(r.err, "frictionlab: error: reading scenario file '/proc/self/mem' failed: Input/output error\n");
+  EXPECT_FALSE(std::filesystem::exists(dir));
+}
+
+// A table nested 40000 deep crashed the command (toml++ recursed out of the stack, SIGSEGV); it
+// is one error line naming the rule (dynamics/toml_nesting.h), for a file and for a --set.
+TEST(DynSimulateCommand, ADeeplyNestedScenarioIsOneErrorLineNotACrash) {
+  const auto dir = fresh_dir("deep");
+  std::filesystem::create_directories(dir);
+  std::string dotted = "a";
+  for (int i = 1; i < 40000; ++i) dotted += ".a";
+  { std::ofstream(dir / "deep.toml") << "[" << dotted << "]\nx = 1\n"; }
+  const auto r = run_frictionlab("simulate " + (dir / "deep.toml").string() + " --out " + (dir / "out").string());
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_EQ(r.err.rfind("frictionlab: error: " + (dir / "deep.toml").string() + ":1: nested more than 64 levels deep", 0),
+            0u)
+      << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  const auto set = run_frictionlab("simulate " + kScenarios + "sphere-spinning.toml --set " + dotted +
+                                   "=1 --out " + (dir / "out").string());
+  EXPECT_EQ(set.exit_code, 1) << set.err;
+  EXPECT_NE(set.err.find("nested more than 64 levels deep"), std::string::npos) << set.err.substr(0, 200);
+  EXPECT_FALSE(std::filesystem::exists(dir / "out"));
+  std::filesystem::remove_all(dir);
+}
+
+// The installed command finds the shipped scenarios by name from any folder (here the build's:
+// the source tree's data/), with or without .toml; an existing path of that name wins.
+TEST(DynSimulateCommand, AShippedScenarioIsFoundByNameFromAnyFolder) {
+  const auto dir = fresh_dir("by_name");
+  std::filesystem::create_directories(dir);
+  for (const std::string name : {"sphere-sliding", "sphere-sliding.toml"}) {
+    const auto r = run_frictionlab("simulate " + name + " --set run.t_end=0.01 --out out", dir);
+    ASSERT_EQ(r.exit_code, 0) << name << ": " << r.err;
+    const auto json = nlohmann::json::parse(slurp(dir / "out" / "summary.json"));
+    EXPECT_EQ(json["scenario"]["name"], "sphere-sliding");
+    EXPECT_EQ(std::filesystem::weakly_canonical(json["scenario"]["source"].get<std::string>()),
+              std::filesystem::weakly_canonical(kScenarios + "sphere-sliding.toml"));
+  }
+  // A file of that name in the working folder is what the user means.
+  std::filesystem::copy_file(kScenarios + "sphere-spinning.toml", dir / "sphere-sliding.toml");
+  const auto own = run_frictionlab("simulate sphere-sliding.toml --set run.t_end=0.01 --out own", dir);
+  ASSERT_EQ(own.exit_code, 0) << own.err;
+  EXPECT_EQ(nlohmann::json::parse(slurp(dir / "own" / "summary.json"))["scenario"]["name"], "sphere-spinning");
+  std::filesystem::remove_all(dir);
+}
+
+TEST(DynSimulateCommand, AnUnknownNameSaysWhereItLooked) {
+  const auto dir = fresh_dir("unknown_name");
+  std::filesystem::create_directories(dir);
+  const auto r = run_frictionlab("simulate no-such-scenario --out out", dir);
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(r.err.rfind("frictionlab: error: scenario 'no-such-scenario' not found: no file 'no-such-scenario' here, "
+                        "and no no-such-scenario or no-such-scenario.toml in data/scenarios, ",
+                        0),
+            0u)
+      << r.err;
+  EXPECT_NE(r.err.find(kScenarios.substr(0, kScenarios.size() - 1)), std::string::npos) << "the source tree's: " << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "out"));
+  std::filesystem::remove_all(dir);
 }
 
 // Whole rows only: every line of the CSV ends in a newline and has every column.

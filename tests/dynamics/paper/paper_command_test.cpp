@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "friction/support/folder_lock.h"
 #include "tests/cli/cli_runner.h"
 
 namespace frictionlab {
@@ -194,6 +195,21 @@ TEST(PaperCommand, AnInterruptedJobSaysSoInItsReportAndSummaryLine) {
   EXPECT_EQ(report.rfind("> **INTERRUPTED**", 0), 0u) << report.substr(0, 300);
   EXPECT_NE(report.find("--resume"), std::string::npos);
   EXPECT_NE(slurp(dir / "behaviour.csv").find(",interrupted,"), std::string::npos);
+  std::filesystem::remove_all(dir);
+}
+
+// Two jobs on one folder (two --resume) both redid the same runs: a job holds its folder
+// (support/folder_lock.h), and a second one is one line naming the folder and the holder.
+TEST(PaperCommand, AFolderInUseByAnotherJobIsRefusedNamingTheHolder) {
+  const auto dir = fresh_dir("in_use");
+  const support::FolderLock held(dir);  // this process stands for the other job
+  const auto r = run_frictionlab(tiny_job(dir, "--resume"));
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_EQ(r.err, "frictionlab: error: --out " + dir.string() + " is in use by another frictionlab job (pid " +
+                       std::to_string(::getpid()) + "; " + (dir / ".frictionlab.lock").string() +
+                       "): wait for it to end, or choose another --out\n");
+  EXPECT_TRUE(r.out.empty()) << r.out;
+  EXPECT_FALSE(std::filesystem::exists(dir / "runs")) << "nothing ran";
   std::filesystem::remove_all(dir);
 }
 
