@@ -214,8 +214,10 @@ RunOptions read_run(const toml::table& root, RunKeys keys) {
     r.settle.normal_speed = run.optional_number("settle_normal_speed");
     r.stop_when_rolling = run.boolean("stop_when_rolling", r.stop_when_rolling);
     r.max_stagnant_steps = run.integer("max_stagnant_steps", r.max_stagnant_steps);
+    r.chatter.max_steps = run.integer("max_chatter_steps", r.chatter.max_steps);
+    r.chatter.step = run.optional_number("chatter_step");
     known.insert(known.end(), {"rest_kinetic_energy", "settle_time", "settle_normal_speed", "stop_when_rolling",
-                               "max_stagnant_steps"});
+                               "max_stagnant_steps", "max_chatter_steps", "chatter_step"});
   }
   run.check_no_unknown_keys(known);
   r.validate();

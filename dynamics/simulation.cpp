@@ -152,6 +152,7 @@ void RunOptions::validate() const {
                             " s < run.t_end = " + message_number(t_end) + " s");
   if (max_stagnant_steps < 0)
     throw invalid_value("run.max_stagnant_steps", static_cast<long long>(max_stagnant_steps), "it must be >= 0 (0: never)");
+  chatter.validate();
   rest.validate();
   settle.validate();
 }
@@ -162,6 +163,7 @@ std::string_view to_string(Termination t) {
     case Termination::rest: return "rest";
     case Termination::rolling: return "rolling";
     case Termination::stagnation: return "stagnation";
+    case Termination::chatter: return "chatter";
     case Termination::law_pole: return "law-pole";
     case Termination::non_finite: return "non-finite";
     case Termination::law_error: return "law-error";
@@ -186,6 +188,7 @@ RunSummary simulate(const BodyOnPlane& sys, const StateVector& x0, const RunOpti
   s.scales = body_scales(sys.body(), sys.plane());
   s.rest = resolve_rest(options.rest, s.scales);
   s.settle = resolve_settling(options.settle, s.scales);
+  s.chatter = resolve_chatter(options.chatter, s.rest, s.scales);
   const StateVector abs_scale = absolute_tolerance_scales(s.scales);
   s.abs_tol = io.abs_tol * abs_scale;
 
@@ -232,6 +235,7 @@ RunSummary simulate(const BodyOnPlane& sys, const StateVector& x0, const RunOpti
   bool in_contact = c0.in_contact;
   poles.set_reference(c0);
   ContactSettling settling(s.settle);
+  ChatterWatch chatter(s.chatter);
   settling.update(t, c0.in_contact, c0.u.dot(c0.gamma));
 
   // The step being sampled: its start is the previous step's end.
@@ -334,6 +338,13 @@ RunSummary simulate(const BodyOnPlane& sys, const StateVector& x0, const RunOpti
                  "run.max_stagnant_steps accepted steps in a row";
         s.thresholds = {given_threshold("run.max_stagnant_steps", static_cast<double>(options.max_stagnant_steps), "steps"),
                         s.settle.time, s.settle.normal_speed, s.rest.slip_speed, s.rest.spin};
+        break;
+      }
+      const ChatterChannel chattered = chatter.update({step.t0, t, c.in_contact, c.U * c.e1, c.Omega});
+      if (chattered != ChatterChannel::none) {
+        stop(Termination::chatter, chatter_message(chatter.episode(chattered), s.chatter, sys.law().name()));
+        s.rule = chatter_rule_text(chattered);
+        s.thresholds = {s.chatter.max_steps, s.chatter.step, s.chatter.slip_speed, s.chatter.spin};
         break;
       }
       if (stop_at_step_limits(s.steps, io.max_steps, options.cancel, s, stop)) break;

@@ -16,6 +16,9 @@
 //   stagnation  the contact stayed in the stagnation region for run.max_stagnant_steps steps in a
 //               row while its normal motion had not settled (a bounce reaching U = Omega = 0):
 //               the integrator can only chatter there, and the model has no sticking branch;
+//   chatter     the slip (or the spin) stayed below its rest threshold while the other did not, with
+//               collapsed steps and repeated reversals, for run.max_chatter_steps steps in a row:
+//               a law discontinuous at U = 0 (or Omega = 0) chatters there (dynamics/chatter_watch.h);
 //   law-pole    a denominator of the friction law passes through 0 (dynamics/pole_watch.h): no
 //               step, not even a trial stage, may cross it, so the integrator closes in on the
 //               pole until no step above rounding avoids it, and the run stops there;
@@ -36,6 +39,7 @@
 #include <vector>
 
 #include "dynamics/body_scales.h"
+#include "dynamics/chatter_watch.h"
 #include "dynamics/equations_of_motion.h"
 #include "dynamics/integrator_options.h"
 #include "dynamics/observer.h"
@@ -70,6 +74,9 @@ struct RunOptions {
   /// 0) takes a few tens of steps per impact; the chatter of a discontinuous law at U = Omega = 0
   /// takes ~1e6 steps per millisecond (steps of ~tolerance/(k g) s).
   long max_stagnant_steps = 1000;
+  /// run.max_chatter_steps, run.chatter_step: when the chatter of a discontinuous law stops the
+  /// run (dynamics/chatter_watch.h).
+  ChatterThresholds chatter;
   const std::atomic<bool>* cancel = nullptr;  ///< checked between steps; may be null
 
   /// std::invalid_argument naming the run.* key and the rule: besides each value's own range,
@@ -83,6 +90,7 @@ enum class Termination {
   rest,
   rolling,
   stagnation,
+  chatter,
   law_pole,
   non_finite,
   law_error,
@@ -93,7 +101,7 @@ enum class Termination {
   output_limit
 };
 
-/// "t_end", "rest", "rolling", "stagnation", "law-pole", "non-finite", "law-error", "integrator-failure",
+/// "t_end", "rest", "rolling", "stagnation", "chatter", "law-pole", "non-finite", "law-error", "integrator-failure",
 /// "max-steps", "interrupted", "output-error", "output-limit".
 [[nodiscard]] std::string_view to_string(Termination t);
 
@@ -120,6 +128,7 @@ struct RunSummary {
   BodyScales scales;            ///< the body's scales (thresholds and tolerances)
   RestRule rest;                ///< the rest thresholds as applied
   SettleRule settle;            ///< the settling thresholds as applied
+  ChatterRule chatter;          ///< the chatter thresholds as applied
   StateVector abs_tol;          ///< the absolute tolerance of each component (abs_tol * scale)
 };
 

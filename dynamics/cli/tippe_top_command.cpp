@@ -54,7 +54,8 @@ void register_tippe_top_command(CLI::App& app) {
                   "decoupled:r_spin=0 where the registry has them)");
   cmd->add_option("--scenario", opt->scenario,
                   "the tippe-top scenario: a file, or a shipped scenario's name (default: the shipped tippe-top.toml)");
-  cmd->add_option("--max-steps", opt->max_steps, "accepted steps allowed per run (a chattering law ends max-steps)");
+  cmd->add_option("--max-steps", opt->max_steps,
+                  "accepted steps allowed per run (a bound; a chattering law ends 'chatter' first, docs/dynamics.md §5)");
   cmd->add_flag("--no-plots", opt->no_plots, "write the gnuplot data and scripts but do not run gnuplot");
   cmd->callback([opt, cmd] { run(*opt, retypable_command(*cmd)); });
 }

@@ -129,8 +129,8 @@ def simulate(scenario, law=None, overrides=None, *, out=None, progress=None):
     OutputError
         The output folder or a file could not be written (an OSError).
 
-    A run that stops early for a physical or numerical reason (a pole of the law, a failed
-    integrator, max-steps) is not an error: its summary says why (``result.reason``). The GIL is
+    A run that stops early for a physical or numerical reason (a pole of the law, the chatter of
+    a discontinuous law, a failed integrator, max-steps) is not an error: its summary says why (``result.reason``). The GIL is
     released while the run integrates, except for the moments it looks at signals and progress.
     """
     overrides = _override_list(overrides)

@@ -167,6 +167,24 @@ TEST(DynScenario, EachBadScenarioGivesOneClearError) {
   expect_errors(cases);
 }
 
+// The chatter event's keys (dynamics/chatter_watch.h): read like the other [run] thresholds, an
+// unset run.chatter_step left to its scaled default, bad values named.
+TEST(DynScenario, ReadsTheChatterKeys) {
+  const Scenario unset = parse_scenario(kGood, "test.toml");
+  EXPECT_EQ(unset.run.chatter.max_steps, kDefaultMaxChatterSteps);
+  EXPECT_FALSE(unset.run.chatter.step.has_value());
+  const Scenario set = parse_scenario(kGood, "test.toml", {"run.max_chatter_steps=200", "run.chatter_step=3e-8"});
+  EXPECT_EQ(set.run.chatter.max_steps, 200);
+  EXPECT_EQ(set.run.chatter.step, 3e-8);
+  EXPECT_EQ(parse_scenario(kGood, "test.toml", {"run.max_chatter_steps=0"}).run.chatter.max_steps, 0);
+  expect_errors({
+      {"negative chatter budget", kGood, {"run.max_chatter_steps=-1"},
+       "run.max_chatter_steps = -1 is invalid: it must be >= 0 (0: never)"},
+      {"chatter budget not an integer", kGood, {"run.max_chatter_steps=1.5"}, "run.max_chatter_steps must be an integer"},
+      {"zero chatter step", kGood, {"run.chatter_step=0"}, "run.chatter_step = 0 is invalid: it must be finite and > 0 s"},
+  });
+}
+
 // Values outside the physically meaningful ranges (docs/dynamics.md §7) are rejected when the
 // scenario is read, naming the key, instead of failing far away ("friction input U = inf").
 // One case per rule; kGood is a 5 cm, 1 kg sphere.
