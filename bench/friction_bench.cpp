@@ -5,13 +5,21 @@
 //
 //   build/bench/friction_bench                       # all laws
 //   build/bench/friction_bench --benchmark_filter='BM_law/(exact|pade-printed)$'
+//   build/bench/friction_bench --benchmark_min_time=0   # one iteration each: a smoke run of seconds
 //
 // One iteration = one evaluation, cycling through the set, so the reported time is the mean cost
-// per evaluation over the set. Ratios between laws are only meaningful within one run.
+// per evaluation over the contacts evaluated. The library chooses the iteration count from
+// --benchmark_min_time (default 0.5 s) for every law, the slow ones too. Ratios between laws are
+// only meaningful within one run.
 // `BM_law/<spec>` evaluates inputs that carry the patch angle psi, as a caller holding an angle
 // does (the command line, Python): the law forms cos psi and sin psi (friction::PatchAngle::cos_sin)
 // in each evaluation, as it always did. `BM_law_direction/<spec>` evaluates the same contacts with
 // the major axis given as its direction (cos psi, sin psi), as the dynamics hands it over.
+//
+// Counters (units in the names; kN means k times N, the friction coefficient times the normal
+// force, not kilonewtons): max_err_F1_kN, max_err_F2_kN (largest |law - exact| of F1, F2 divided by
+// k N), max_err_M_kNa (of M divided by k N a), allocs_per_eval (calls of operator new per
+// evaluation), inputs (contacts in the set the law cycles through).
 
 #include <benchmark/benchmark.h>
 
@@ -19,6 +27,7 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -35,6 +44,14 @@ constexpr std::size_t kSlowLawSubset = 64;
 
 struct MaxErrors {
   double F1 = 0.0, F2 = 0.0, M = 0.0;
+};
+
+// A law's errors, computed the first time one of its benchmarks runs (never for a law the filter
+// leaves out: for a slow law they cost ~1 s) and shared by its two benchmarks.
+struct LazyErrors {
+  std::shared_ptr<friction::FrictionLaw> law;
+  std::vector<friction::ContactInput> set;
+  std::optional<MaxErrors> errors;
 };
 
 // Largest |law - reference| over `set`, per kN (forces) and kNa (moment); +inf if any output is not
@@ -64,8 +81,8 @@ MaxErrors max_errors(const friction::FrictionLaw& law, const friction::FrictionL
 
 // Registers BM_law/<spec> (the inputs as given: angles) or BM_law_direction/<spec> (the same
 // inputs with psi as the direction (cos psi, sin psi), formed here, before the timing).
-void register_timing(bool from_angle, const std::string& spec, bool slow, std::shared_ptr<friction::FrictionLaw> law,
-                     const std::vector<friction::ContactInput>& inputs, MaxErrors err) {
+void register_timing(bool from_angle, const std::string& spec, std::shared_ptr<friction::FrictionLaw> law,
+                     const std::vector<friction::ContactInput>& inputs, std::shared_ptr<LazyErrors> lazy) {
   auto set = std::make_shared<std::vector<friction::ContactInput>>(inputs);
   if (!from_angle) {
     for (auto& in : *set) {
@@ -74,7 +91,9 @@ void register_timing(bool from_angle, const std::string& spec, bool slow, std::s
     }
   }
   const std::string name = (from_angle ? "BM_law/" : "BM_law_direction/") + spec;
-  auto* b = benchmark::RegisterBenchmark(name.c_str(), [law, set, err](benchmark::State& state) {
+  benchmark::RegisterBenchmark(name.c_str(), [law, set, lazy](benchmark::State& state) {
+    if (!lazy->errors) lazy->errors = max_errors(*lazy->law, *friction::make_reference_law(), lazy->set);
+    const MaxErrors err = *lazy->errors;
     std::size_t i = 0;
     const long long allocations_before = g_allocations.load();
     for (auto _ : state) {
@@ -89,11 +108,10 @@ void register_timing(bool from_angle, const std::string& spec, bool slow, std::s
     state.counters["allocs_per_eval"] =
         static_cast<double>(allocations) / static_cast<double>(state.iterations());
     state.counters["inputs"] = static_cast<double>(set->size());
-    state.counters["max_err_F1"] = err.F1;
-    state.counters["max_err_F2"] = err.F2;
-    state.counters["max_err_M"] = err.M;
+    state.counters["max_err_F1_kN"] = err.F1;
+    state.counters["max_err_F2_kN"] = err.F2;
+    state.counters["max_err_M_kNa"] = err.M;
   });
-  if (slow) b->Iterations(2 * kSlowLawSubset);
 }
 
 void register_law(const friction::LawInfo& info, const std::vector<friction::ContactInput>& full) {
@@ -101,10 +119,9 @@ void register_law(const friction::LawInfo& info, const std::vector<friction::Con
   const std::vector<friction::ContactInput> set(
       full.begin(), full.begin() + static_cast<std::ptrdiff_t>(slow ? kSlowLawSubset : full.size()));
   std::shared_ptr<friction::FrictionLaw> law = friction::make_law(info.spec);
-  const auto reference = friction::make_reference_law();
-  const MaxErrors err = max_errors(*law, *reference, set);
-  register_timing(true, info.spec, slow, law, set, err);
-  register_timing(false, info.spec, slow, law, set, err);
+  auto lazy = std::make_shared<LazyErrors>(LazyErrors{law, set, std::nullopt});
+  register_timing(true, info.spec, law, set, lazy);
+  register_timing(false, info.spec, law, set, lazy);
 }
 
 }  // namespace

@@ -2,7 +2,8 @@
 """The cost table of docs/benchmarks.md: runs friction_bench once (every law and every pressure
 spec, with repetitions) with JSON output and prints one markdown row per spec: the median time
 per evaluation over the repetitions, its ratio to `pade-printed` from the same run, the spread of
-the repetitions, and the benchmark's counters (largest error against `exact`, allocations).
+the repetitions, and the benchmark's counters (largest error against `exact` in units of kN = k
+times N and kNa = k N a, not kilonewtons; allocations).
 
     python3 bench/law_cost_table.py [--bench build/bench/friction_bench] [--repetitions 5]
                                     [--time cpu|real] [--filter REGEX] [--json out.json]
@@ -52,6 +53,11 @@ def fmt_time(ns):
     if ns >= 1e3:
         return f"{ns / 1e3:.3g} us"
     return f"{ns:.3g} ns"
+
+
+def counter(b, name, old_name):
+    """A counter of the run; runs before 2026-11-28 named the errors without their unit."""
+    return b.get(name, b.get(old_name))
 
 
 def fmt_err(x):
@@ -106,19 +112,25 @@ def main():
     print(f"Command: `{' '.join(cmd)}` (via `bench/law_cost_table.py`); {args.time.upper()} time per evaluation, "
           f"median of {reps} repetitions; ratio to the median of `{BASELINE}` in the same run.")
     print()
-    print("| spec | time per evaluation | vs `pade-printed` | spread (min-max) | max err F1 (kN) | max err F2 (kN) "
-          "| max err M (kNa) | allocs per eval |")
+    print("| spec | time per evaluation | vs `pade-printed` | spread (min-max) | max err F1 / kN | max err F2 / kN "
+          "| max err M / kNa | allocs per eval |")
     print("|---|---:|---:|---:|---:|---:|---:|---:|")
     base = median[BASELINE]
     for spec in order:
         times = [t for t, _ in runs[spec]]
         last = runs[spec][-1][1]
         inputs = last.get("inputs")
-        label = f"`{spec}`" + (f" ({int(inputs)} inputs)" if inputs and inputs < 4096 else "")
+        timed = min(b.get("iterations", inputs or 0) for _, b in runs[spec]) if inputs else 0
+        if inputs and timed < inputs:  # fewer evaluations than the set holds: its first ones only
+            label = f"`{spec}` (first {timed} of {int(inputs)} inputs)"
+        else:
+            label = f"`{spec}`" + (f" ({int(inputs)} inputs)" if inputs and inputs < 4096 else "")
         ratio = median[spec] / base
         ratio_s = "1" if spec == BASELINE else (f"{ratio:,.0f}x" if ratio >= 100 else f"{ratio:.2g}x")
         print(f"| {label} | {fmt_time(median[spec])} | {ratio_s} | {fmt_time(min(times))} - {fmt_time(max(times))} "
-              f"| {fmt_err(last.get('max_err_F1'))} | {fmt_err(last.get('max_err_F2'))} | {fmt_err(last.get('max_err_M'))} "
+              f"| {fmt_err(counter(last, 'max_err_F1_kN', 'max_err_F1'))} "
+              f"| {fmt_err(counter(last, 'max_err_F2_kN', 'max_err_F2'))} "
+              f"| {fmt_err(counter(last, 'max_err_M_kNa', 'max_err_M'))} "
               f"| {fmt_err(last.get('allocs_per_eval'))} |")
 
 

@@ -89,7 +89,7 @@ install(DIRECTORY ${PROJECT_SOURCE_DIR}/friction/ DESTINATION ${CMAKE_INSTALL_IN
 file(GLOB dynamics_headers CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/dynamics/*.h)
 install(FILES ${dynamics_headers} DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/dynamics)
 
-# The shipped data, where the installed command looks for it (dynamics/paper/CMakeLists.txt).
+# The shipped data, where the installed command looks for it (dynamics/shipped_data.h).
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/data/ DESTINATION ${FRICTIONLAB_INSTALL_DATADIR})
 install(FILES ${PROJECT_SOURCE_DIR}/LICENSE DESTINATION ${CMAKE_INSTALL_DOCDIR})
 

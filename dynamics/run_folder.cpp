@@ -17,10 +17,11 @@ void start_run_folder(const std::filesystem::path& out_dir, const std::string& s
                                                                 resolved_toml + "\n");
 }
 
-void write_run_summary(const std::filesystem::path& path, support::Json summary, long trajectory_rows,
-                       const std::string& output_error) {
-  summary["output"] = {{"trajectory_rows", trajectory_rows},
-                       {"error", output_error.empty() ? support::Json(nullptr) : support::Json(output_error)}};
+void write_run_summary(const std::filesystem::path& path, support::Json summary, const TrajectoryOutput& output) {
+  summary["output"] = {{"trajectory_rows", output.rows},
+                       {"trajectory_bytes", output.bytes},
+                       {"max_output_bytes", output.max_bytes},
+                       {"error", output.error.empty() ? support::Json(nullptr) : support::Json(output.error)}};
   support::write_file_atomically(path, support::json_text(summary));
 }
 

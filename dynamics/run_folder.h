@@ -3,6 +3,7 @@
 // (dynamics/scenario_run.h, dynamics/puck/puck_scenario_run.h): the folder with the resolved
 // scenario beside the outputs, a tee of observers, and the summary.json's output record.
 
+#include <cstdint>
 #include <filesystem>
 #include <string>
 
@@ -16,10 +17,17 @@ namespace frictionlab::dynamics {
 void start_run_folder(const std::filesystem::path& out_dir, const std::string& source,
                       const std::string& resolved_toml);
 
-/// Adds {"output": {"trajectory_rows", "error"}} to `summary` (error null when `output_error` is
-/// empty) and writes it to `path` atomically.
-void write_run_summary(const std::filesystem::path& path, support::Json summary, long trajectory_rows,
-                       const std::string& output_error);
+/// What a run's trajectory writer did, for the summary.
+struct TrajectoryOutput {
+  long rows = 0;            ///< rows given to the writer
+  std::uint64_t bytes = 0;  ///< the file's size, header included, bytes
+  long max_bytes = 0;       ///< its limit, run.max_output_bytes
+  std::string error;        ///< why the file is incomplete (a write or its close failed), or empty
+};
+
+/// Adds {"output": {"trajectory_rows", "trajectory_bytes", "max_output_bytes", "error"}} to
+/// `summary` (error null when there is none) and writes it to `path` atomically.
+void write_run_summary(const std::filesystem::path& path, support::Json summary, const TrajectoryOutput& output);
 
 /// Sends every report of a run to two observers, the second optional (the trajectory writer and a
 /// caller's progress display); `Base` is the run's observer interface (sample, step).

@@ -16,6 +16,8 @@ void RunOptions::validate() const {
   if (!(std::isfinite(output_dt) && output_dt > 0.0))
     throw invalid_value("run.output_dt", output_dt, "it must be finite and > 0 s");
   if (max_samples <= 0) throw invalid_value("run.max_samples", static_cast<long long>(max_samples), "it must be > 0");
+  if (max_output_bytes <= 0)
+    throw invalid_value("run.max_output_bytes", static_cast<long long>(max_output_bytes), "it must be > 0 bytes");
   if (t_end / output_dt > static_cast<double>(max_samples))
     throw invalid_value("run.output_dt", output_dt,
                         "run.t_end/run.output_dt = " + message_number(t_end / output_dt) +
@@ -30,6 +32,7 @@ void RunOptions::validate() const {
                             " s < run.t_end = " + message_number(t_end) + " s");
   if (max_stagnant_steps < 0)
     throw invalid_value("run.max_stagnant_steps", static_cast<long long>(max_stagnant_steps), "it must be >= 0 (0: never)");
+  chatter.validate();
   rest.validate();
   settle.validate();
 }
@@ -40,6 +43,7 @@ std::string_view to_string(Termination t) {
     case Termination::rest: return "rest";
     case Termination::rolling: return "rolling";
     case Termination::stagnation: return "stagnation";
+    case Termination::chatter: return "chatter";
     case Termination::law_pole: return "law-pole";
     case Termination::non_finite: return "non-finite";
     case Termination::law_error: return "law-error";

@@ -5,20 +5,27 @@
 #include <atomic>
 #include <string_view>
 
+#include "dynamics/chatter_watch.h"
 #include "dynamics/integrator_options.h"
+#include "dynamics/output_limit.h"
 #include "dynamics/rest_event.h"
 #include "dynamics/settling.h"
 
 namespace frictionlab::dynamics {
 
-/// Default run.max_samples: 1e7 rows (~4.4 GB of trajectory.csv at ~440 bytes a row) is ten times
-/// what the paper's runs plan (t_end = 1000 s at output_dt = 1e-3 s).
+/// Default run.max_samples: 1e7 samples, ten times what the paper's scenario files once planned
+/// (t_end = 1000 s at output_dt = 1e-3 s). It bounds the samples a run may plan whatever keeps
+/// them (in memory too); the size of the trajectory file has its own, tighter limit
+/// (max_output_bytes, dynamics/output_limit.h).
 inline constexpr long kDefaultMaxSamples = 10'000'000;
 
 struct RunOptions {
   double t_end = 1.0;       ///< s, > 0
   double output_dt = 1e-3;  ///< s, > 0: the sample interval; t_end/output_dt <= max_samples
   long max_samples = kDefaultMaxSamples;  ///< > 0: the most samples a run may plan
+  /// > 0, bytes: the largest trajectory file a run may write (dynamics/output_limit.h); enforced
+  /// by the writers (dynamics/trajectory_csv.h), not by the run loop.
+  long max_output_bytes = kDefaultMaxOutputBytes;
   IntegratorOptions integrator;
   RestThresholds rest;
   SettleThresholds settle;
@@ -29,6 +36,9 @@ struct RunOptions {
   /// 0) takes a few tens of steps per impact; the chatter of a discontinuous law at U = Omega = 0
   /// takes ~1e6 steps per millisecond (steps of ~tolerance/(k g) s).
   long max_stagnant_steps = 1000;
+  /// run.max_chatter_steps, run.chatter_step: when the chatter of a discontinuous law stops the
+  /// run (dynamics/chatter_watch.h).
+  ChatterThresholds chatter;
   const std::atomic<bool>* cancel = nullptr;  ///< checked between steps; may be null
 
   /// std::invalid_argument naming the run.* key and the rule: besides each value's own range,
@@ -42,6 +52,7 @@ enum class Termination {
   rest,
   rolling,
   stagnation,
+  chatter,
   law_pole,
   non_finite,
   law_error,
@@ -52,7 +63,7 @@ enum class Termination {
   output_limit
 };
 
-/// "t_end", "rest", "rolling", "stagnation", "law-pole", "non-finite", "law-error", "integrator-failure",
+/// "t_end", "rest", "rolling", "stagnation", "chatter", "law-pole", "non-finite", "law-error", "integrator-failure",
 /// "max-steps", "interrupted", "output-error", "output-limit".
 [[nodiscard]] std::string_view to_string(Termination t);
 

@@ -8,10 +8,14 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "dynamics/output_limit.h"
 #include "dynamics/patch_model.h"
 #include "dynamics/scenario_limits.h"
 #include "dynamics/scenario_toml.h"
+#include "dynamics/trajectory_csv.h"
+#include "dynamics/toml_document.h"
 #include "friction/registry.h"
+#include "friction/support/checked_input.h"
 #include "friction/support/errors.h"
 #include "friction/support/number_format.h"
 
@@ -131,6 +135,8 @@ Scenario build(const toml::table& root, const std::string& source, const std::ve
 
   // [run]
   s.run = scenario_toml::read_run(root, scenario_toml::RunKeys::body);
+  check_planned_output(s.run.t_end, s.run.output_dt, s.run.max_output_bytes, trajectory_header().size(),
+                       kMinTrajectoryRowBytes, "trajectory.csv");
 
   s.resolved_toml = resolved_text(root, s.name, s.law);
   return s;
@@ -143,26 +149,12 @@ ScenarioDocument::ScenarioDocument(std::shared_ptr<const Parsed> parsed, std::st
 
 ScenarioDocument ScenarioDocument::parse(std::string_view toml_text, const std::string& source) {
   auto parsed = std::make_shared<Parsed>();
-  try {
-    parsed->root = toml::parse(toml_text, source);
-  } catch (const toml::parse_error& e) {
-    std::ostringstream m;
-    m << source << ":" << e.source().begin.line << ":" << e.source().begin.column << ": " << e.description();
-    fail(m.str());
-  }
+  parsed->root = parse_toml(toml_text, source);
   return ScenarioDocument(std::move(parsed), source);
 }
 
 ScenarioDocument ScenarioDocument::read(const std::filesystem::path& file) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(file, ec))
-    fail("scenario file '" + file.string() + "' is a folder: give the path of a .toml file");
-  std::ifstream in(file, std::ios::binary);
-  if (!in) fail("cannot read scenario file '" + file.string() + "': " + std::strerror(errno));
-  std::stringstream buf;
-  buf << in.rdbuf();
-  if (in.bad()) fail("cannot read scenario file '" + file.string() + "': " + std::strerror(errno));
-  return parse(buf.str(), file.string());
+  return parse(support::read_file(file, "scenario file"), file.string());
 }
 
 Scenario ScenarioDocument::resolve(const std::vector<std::string>& overrides) const {

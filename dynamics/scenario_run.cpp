@@ -19,7 +19,7 @@ ScenarioRun run_scenario(const Scenario& scenario, const std::filesystem::path& 
   ScenarioRun run;
   run.trajectory_csv = out_dir / "trajectory.csv";
   run.summary_json = out_dir / "summary.json";
-  TrajectoryCsv csv(run.trajectory_csv);
+  TrajectoryCsv csv(run.trajectory_csv, static_cast<std::uint64_t>(scenario.run.max_output_bytes));
   TeeObserver<Observer, Sample> tee(csv, progress);
   RunOptions options = scenario.run;
   options.cancel = cancel;
@@ -27,7 +27,8 @@ ScenarioRun run_scenario(const Scenario& scenario, const std::filesystem::path& 
   run.summary = simulate(sys, x0, options, &tee);
   if (run.summary.reason == Termination::output_error) run.output_error = run.summary.message;
   close_trajectory(csv, run.output_error);
-  write_run_summary(run.summary_json, summary_json(scenario, run.summary), csv.rows(), run.output_error);
+  write_run_summary(run.summary_json, summary_json(scenario, run.summary),
+                    {csv.rows(), csv.bytes(), scenario.run.max_output_bytes, run.output_error});
   return run;
 }
 

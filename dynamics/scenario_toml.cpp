@@ -1,7 +1,10 @@
 #include "dynamics/scenario_toml.h"
 
+#include <algorithm>
 #include <sstream>
 
+#include "dynamics/toml_document.h"
+#include "dynamics/toml_nesting.h"
 #include "friction/registry.h"
 #include "friction/support/errors.h"
 
@@ -129,14 +132,15 @@ void apply_override(toml::table& root, const std::string& assignment) {
     fail("override '" + assignment + "' must have the form key=value (e.g. run.t_end=2)");
   const std::string key = assignment.substr(0, eq);
   const std::string value = assignment.substr(eq + 1);
+  // The key's parts nest as tables ([run] t_end: 2 levels), the value may nest further: the
+  // scenario after the override must still read back (dynamics/toml_nesting.h).
+  const std::string holder_text = "v = " + value;
+  const auto key_parts = static_cast<int>(std::count(key.begin(), key.end(), '.')) + 1;
+  check_toml_nesting(key_parts - 1 + toml_nesting(holder_text).depth, "the key and value");
   // Parse the value as TOML; if that fails it is a bare string (e.g. contact.law=exact).
-  toml::table holder;
-  try {
-    holder = toml::parse("v = " + value);
-  } catch (const toml::parse_error&) {
-    holder = toml::table{};
-    holder.insert("v", value);
-  }
+  std::optional<toml::table> parsed = try_parse_toml(holder_text, "the value");
+  toml::table holder = parsed ? std::move(*parsed) : toml::table{};
+  if (!parsed) holder.insert("v", value);
   toml::table* t = &root;
   std::string::size_type start = 0;
   for (;;) {
@@ -191,6 +195,7 @@ RunOptions read_run(const toml::table& root, RunKeys keys) {
   r.t_end = run.number("t_end");
   r.output_dt = run.number("output_dt", 1e-3);
   r.max_samples = run.integer("max_samples", r.max_samples);
+  r.max_output_bytes = run.integer("max_output_bytes", r.max_output_bytes);
   r.integrator.method = run.string("integrator", r.integrator.method);
   r.integrator.abs_tol = run.number("abs_tol", r.integrator.abs_tol);
   r.integrator.rel_tol = run.number("rel_tol", r.integrator.rel_tol);
@@ -200,17 +205,19 @@ RunOptions read_run(const toml::table& root, RunKeys keys) {
   // Unset thresholds take defaults scaled to the body (dynamics/rest_event.h, dynamics/settling.h).
   r.rest.slip_speed = run.optional_number("rest_slip_speed");
   r.rest.spin = run.optional_number("rest_spin");
-  std::vector<std::string> known = {"t_end",        "output_dt", "max_samples",     "integrator", "abs_tol",
-                                    "rel_tol",      "initial_step", "max_step",      "max_steps",  "rest_slip_speed",
-                                    "rest_spin"};
+  std::vector<std::string> known = {"t_end",        "output_dt", "max_samples",     "max_output_bytes", "integrator",
+                                    "abs_tol",      "rel_tol",   "initial_step",    "max_step",         "max_steps",
+                                    "rest_slip_speed", "rest_spin"};
   if (keys == RunKeys::body) {
     r.rest.kinetic_energy = run.optional_number("rest_kinetic_energy");
     r.settle.time = run.optional_number("settle_time");
     r.settle.normal_speed = run.optional_number("settle_normal_speed");
     r.stop_when_rolling = run.boolean("stop_when_rolling", r.stop_when_rolling);
     r.max_stagnant_steps = run.integer("max_stagnant_steps", r.max_stagnant_steps);
+    r.chatter.max_steps = run.integer("max_chatter_steps", r.chatter.max_steps);
+    r.chatter.step = run.optional_number("chatter_step");
     known.insert(known.end(), {"rest_kinetic_energy", "settle_time", "settle_normal_speed", "stop_when_rolling",
-                               "max_stagnant_steps"});
+                               "max_stagnant_steps", "max_chatter_steps", "chatter_step"});
   }
   run.check_no_unknown_keys(known);
   r.validate();

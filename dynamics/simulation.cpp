@@ -17,7 +17,7 @@ using support::message_number;
 class BodyOnPlane::Monitor {
  public:
   Monitor(const BodyOnPlane& sys, const RunOptions& options, RunSummary& s)
-      : sys_(sys), options_(options), s_(s), settling_(resolve_settle(sys, options, s)) {
+      : sys_(sys), options_(options), s_(s), settling_(resolve_settle(sys, options, s)), chatter_(s.chatter) {
     abs_scale_ = absolute_tolerance_scales(s.scales);
   }
 
@@ -43,7 +43,7 @@ class BodyOnPlane::Monitor {
   }
 
   template <class Step, class Sampler, class Stop>
-  After after_step(double t, StateVector& x, const ContactState& c, BodyMode& /*mode*/, Step& /*step*/,
+  After after_step(double t, StateVector& x, const ContactState& c, BodyMode& /*mode*/, Step& step,
                    Sampler& /*sampler*/, Stop&& stop) {
     RunSummary& s = s_;
     if (c.in_contact != in_contact_) (c.in_contact ? s.landings : s.liftoffs) += 1;
@@ -95,6 +95,13 @@ class BodyOnPlane::Monitor {
                       s.settle.time, s.settle.normal_speed, s.rest.slip_speed, s.rest.spin};
       return After::stopped;
     }
+    const ChatterChannel chattered = chatter_.update({step.t0, t, c.in_contact, c.U * c.e1, c.Omega});
+    if (chattered != ChatterChannel::none) {
+      stop(Termination::chatter, chatter_message(chatter_.episode(chattered), s.chatter, sys_.law().name()));
+      s.rule = chatter_rule_text(chattered);
+      s.thresholds = {s.chatter.max_steps, s.chatter.step, s.chatter.slip_speed, s.chatter.spin};
+      return After::stopped;
+    }
     return After::go_on;
   }
 
@@ -106,6 +113,7 @@ class BodyOnPlane::Monitor {
     s.scales = body_scales(sys.body(), sys.plane());
     s.rest = resolve_rest(options.rest, s.scales);
     s.settle = resolve_settling(options.settle, s.scales);
+    s.chatter = resolve_chatter(options.chatter, s.rest, s.scales);
     return s.settle;
   }
   double kinetic_energy_(const StateVector& x) const { return sys_.kinetic_energy(x); }
@@ -114,6 +122,7 @@ class BodyOnPlane::Monitor {
   const RunOptions& options_;
   RunSummary& s_;
   ContactSettling settling_;
+  ChatterWatch chatter_;
   StateVector abs_scale_;
   bool in_contact_ = false;
   long stagnant_unsettled_ = 0;  // accepted steps in a row in the stagnation region, not settled

@@ -18,6 +18,9 @@
 //   stagnation  the contact stayed in the stagnation region for run.max_stagnant_steps steps in a
 //               row while its normal motion had not settled (a bounce reaching U = Omega = 0):
 //               the integrator can only chatter there, and the model has no sticking branch;
+//   chatter     the slip (or the spin) stayed below its rest threshold while the other did not, with
+//               collapsed steps and repeated reversals, for run.max_chatter_steps steps in a row:
+//               a law discontinuous at U = 0 (or Omega = 0) chatters there (dynamics/chatter_watch.h);
 //   law-pole    a denominator of the friction law passes through 0 (dynamics/pole_watch.h): no
 //               step, not even a trial stage, may cross it, so the integrator closes in on the
 //               pole until no step above rounding avoids it, and the run stops there;
@@ -33,8 +36,10 @@
 // (unless the output failed) and returned.
 
 #include "dynamics/body_scales.h"
+#include "dynamics/chatter_watch.h"
 #include "dynamics/equations_of_motion.h"
 #include "dynamics/observer.h"
+#include "dynamics/output_limit.h"
 #include "dynamics/rest_event.h"
 #include "dynamics/run_options.h"
 #include "dynamics/run_summary.h"
@@ -52,6 +57,7 @@ struct RunSummary : RunSummaryOf<StateVector> {
   BodyScales scales;            ///< the body's scales (thresholds and tolerances)
   RestRule rest;                ///< the rest thresholds as applied
   SettleRule settle;            ///< the settling thresholds as applied
+  ChatterRule chatter;          ///< the chatter thresholds as applied
 };
 
 /// Integrates from x0 at t = 0. `observer` may be null. Throws std::invalid_argument for invalid

@@ -139,8 +139,13 @@ class Spool {
   std::fstream file_;
 };
 
-void check_read(const std::istream& in) {
-  if (in.bad()) throw std::runtime_error("cannot read the input");
+// A read that failed is not the end of the table. The stream keeps no reason: errno, cleared before
+// each read, holds the system's (EIO, ...).
+void check_read(const std::istream& in, const std::string& name) {
+  if (in.bad()) {
+    throw std::runtime_error("reading " + name + " failed" +
+                             (errno != 0 ? std::string(": ") + std::strerror(errno) : std::string()));
+  }
 }
 
 }  // namespace
@@ -177,7 +182,9 @@ std::string format_forces(const FrictionForces& f) {
 BatchSummary evaluate_csv(const std::vector<const FrictionLaw*>& laws, std::istream& in, std::ostream& out,
                           const BatchOptions& options) {
   if (laws.empty()) throw std::invalid_argument("no friction law given");
-  const bool law_column = laws.size() > 1;
+  // A message about a row names the law only when there are several (one law: the message is the
+  // law's own, as a single evaluation gives it).
+  const bool several = laws.size() > 1;
   // The law column's field per law, made once: the row loop allocates nothing.
   std::vector<std::string> law_field;
   for (const FrictionLaw* l : laws) law_field.push_back("," + csv_field(l->spec()));
@@ -186,7 +193,7 @@ BatchSummary evaluate_csv(const std::vector<const FrictionLaw*>& laws, std::istr
   std::string header;
   std::size_t number = 0;
   bool found = false;
-  while (std::getline(in, header)) {
+  for (errno = 0; std::getline(in, header); errno = 0) {
     ++number;
     if (number == 1 && std::string_view(header).substr(0, kByteOrderMark.size()) == kByteOrderMark) {
       header.erase(0, kByteOrderMark.size());
@@ -197,7 +204,7 @@ BatchSummary evaluate_csv(const std::vector<const FrictionLaw*>& laws, std::istr
       break;
     }
   }
-  check_read(in);
+  check_read(in, options.input_name);
   if (!found) throw std::invalid_argument("input is empty: expected a CSV header");
   const std::size_t header_line = number;
   const auto names = split_csv_line(header);
@@ -222,7 +229,7 @@ BatchSummary evaluate_csv(const std::vector<const FrictionLaw*>& laws, std::istr
   std::optional<Spool> spool;
   if (options.on_error == OnError::stop) spool.emplace();
   std::ostream& dest = spool ? spool->stream() : out;
-  write_checked(dest, header + (law_column ? ",law" : "") + ",F1,F2,M\n");
+  write_checked(dest, header + "," + std::string(kOutputColumns) + "\n");
 
   BatchSummary summary;
   // Reused for every row: the loop allocates nothing once they have grown to the longest row.
@@ -237,13 +244,13 @@ BatchSummary evaluate_csv(const std::vector<const FrictionLaw*>& laws, std::istr
     for (std::size_t i = 0; i < laws.size(); ++i) {
       if (law && laws[i] != law) continue;
       row.assign(line);
-      if (law_column) row += law_field[i];
+      row += law_field[i];
       row += ",nan,nan,nan\n";
       write_checked(dest, row);
       ++summary.written;
     }
   };
-  while (std::getline(in, line)) {
+  for (errno = 0; std::getline(in, line); errno = 0) {
     ++number;
     if (!line.empty() && line.back() == '\r') line.pop_back();
     if (trim(line).empty()) continue;
@@ -268,11 +275,11 @@ BatchSummary evaluate_csv(const std::vector<const FrictionLaw*>& laws, std::istr
       try {
         forces = law->evaluate(input);
       } catch (const std::invalid_argument& e) {
-        bad_row(number, (law_column ? std::string(law->spec()) + ": " : std::string()) + e.what(), law);
+        bad_row(number, (several ? std::string(law->spec()) + ": " : std::string()) + e.what(), law);
         continue;
       }
       row.assign(line);
-      if (law_column) row += law_field[i];
+      row += law_field[i];
       row += ',';
       append_forces(row, forces);
       row += '\n';
@@ -280,7 +287,7 @@ BatchSummary evaluate_csv(const std::vector<const FrictionLaw*>& laws, std::istr
       ++summary.written;
     }
   }
-  check_read(in);
+  check_read(in, options.input_name);
   if (spool) spool->copy_to(out);
   flush_checked(out);
   return summary;

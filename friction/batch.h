@@ -6,11 +6,12 @@
 // untouched), then one contact per line; blank lines are skipped. Numbers are C locale decimals
 // (a leading '+' allowed); one outside the double range ("1e999", "1e-400") is named as such.
 //
-// Output: every input column as it was, then (with more than one law) a `law` column naming each
-// law by its spec (FrictionLaw::spec(), quoted if it holds a comma), then F1, F2, M each in the
-// shortest text that reads back to the same double (lossless, never localised). Rows come in input
-// order; with several laws, each input row gives one output row per law, in the order the laws are
-// given.
+// Output: every input column as it was, then a `law` column naming the law by its spec
+// (FrictionLaw::spec(), quoted if it holds a comma), then F1, F2, M each in the shortest text that
+// reads back to the same double (lossless, never localised; a zero is "0", never "-0",
+// support/number_format.h). The columns are the same for one law and for several, so that a
+// reader of the output need not know how many were asked for. Rows come in input order; each input
+// row gives one output row per law, in the order the laws are given.
 //
 // Streaming: rows are read, evaluated and written one at a time, so memory does not grow with the
 // table. With OnError::stop (the default) nothing reaches `out` unless every row succeeds: rows go
@@ -33,6 +34,9 @@
 
 namespace frictionlab::friction {
 
+/// The columns every output row ends with, after the input's own (the header's tail).
+inline constexpr std::string_view kOutputColumns = "law,F1,F2,M";
+
 /// Splits one CSV line into raw fields (double quotes protect commas; fields are kept verbatim).
 [[nodiscard]] std::vector<std::string_view> split_csv_line(std::string_view line);
 
@@ -51,6 +55,8 @@ struct BatchOptions {
   OnError on_error = OnError::stop;
   /// With skip or nan, called once per bad row with its line number and the reason (one line).
   std::function<void(std::size_t line, const std::string& reason)> on_bad_row;
+  /// The input in messages: a read that fails part-way is "reading INPUT_NAME failed: REASON".
+  std::string input_name = "the input";
 };
 
 struct BatchSummary {
@@ -59,8 +65,8 @@ struct BatchSummary {
   std::size_t bad = 0;       ///< output rows skipped or written as nan
 };
 
-/// Evaluates every law of `laws` (at least one; a `law` column is added if there are several) on
-/// every row of `in`, streaming the table to `out` as described above.
+/// Evaluates every law of `laws` (at least one) on every row of `in`, streaming the table to `out`
+/// as described above.
 BatchSummary evaluate_csv(const std::vector<const FrictionLaw*>& laws, std::istream& in, std::ostream& out,
                           const BatchOptions& options = {});
 

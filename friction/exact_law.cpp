@@ -595,6 +595,9 @@ struct RimZeros {
   std::array<double, 4> x{};                // real parts (set by the graded branch)
   std::array<double, 4> d{};                // |imaginary parts|
   int count = 0;
+  // The first `conjugate_free` come from the first quadratic below; the others are their complex
+  // conjugates t -> conj(t) (the same x and d).
+  int conjugate_free = 0;
 };
 
 // The complex zeros t = x +- i d of |rho(t) - c|^2 = (cos t - c1)^2 + (mu sin t - c2)^2: with
@@ -628,6 +631,7 @@ RimZeros rim_zeros(double mu, double c1, double c2) {
     if (nq == 0.0) continue;
     if (a > 0.0) add(q / a, nq / (a * a));
     add(Complex(c * q.real() / nq, -c * q.imag() / nq), (c * c) / nq);
+    if (sg > 0.0) out.conjugate_free = out.count;
   }
   return out;
 }
@@ -816,6 +820,192 @@ Result uniform_rim(double mu, double c1, double c2) {
     }
   }
   return {scale * acc.g1, scale * acc.g2, scale * acc.h};
+}
+
+// Uniform pressure, slender patches: the rim integrals folded by the patch's two mirror symmetries
+// (docs/pressure-models.md §3). uniform_rim's G'_2 = (1/(pi mu)) ∮ (|w| - |c|) sin t dt is an
+// O(mu) integral of O(1) terms divided by mu, so its rounding grows like 1e-16/mu (at b/a = 1e-12,
+// F1 reached 1.00008 kN and went negative at tiny slip). Pairing each rim point with its mirror
+// images removes the cancellation exactly: with T1(t) = |w(t)| + |w(pi - t)| and
+// T2(t) = |w(t)| + |w(-t)|, |w(t)|^2 - |w(pi - t)|^2 = -4 c1 cos t and
+// |w(t)|^2 - |w(-t)|^2 = -4 mu c2 sin t, so
+//   G'_1 = -(2 c1/pi) ∮ cos^2 t / T1 dt,   G'_2 = -(2 c2/pi) ∮ sin^2 t / T2 dt,
+//   H = (1/(3 pi)) ∮ |w| dt + (2/3) c.G'                                    (|c| <= 1),
+//   H = (1/(3 pi)) ∮ g dt + (4/(3 pi |c|)) (c1^2 ∮ cos^2 t g1/T1 dt + c2^2 ∮ sin^2 t g2/T2 dt)
+//                                                                            (|c| > 1),
+// g = |w| - |c| = (|rho|^2 - 2 rho.c)/(|w| + |c|), g1 = g(t) + g(pi - t) = T1 - 2|c|,
+// g2 = g(t) + g(-t) = T2 - 2|c| (the |c| > 1 form keeps the O(s) terms of H from cancelling, as
+// chat does in uniform_rim). No 1/mu is left, and G' = -(c1 P1, c2 P2) with P1, P2 > 0, so
+// F1 = s (sin^2 psi P1 + cos^2 psi P2) >= 0 by construction. The integrands have the four
+// symmetries, so t runs over [0, pi/2] with the four images of each node; their singularities are
+// the zeros of |rho(t) - c|^2 (rim_zeros) and their mirror images, folded into [0, pi/2].
+
+// The route is taken below this axis ratio; above, uniform_rim, whose error (~1e-16/mu) is at most
+// ~1e-12 there, is kept so that those outputs stay as they were, bit for bit.
+constexpr double kRimFoldedMaxAxisRatio = 1e-4;
+
+// A rim angle folded into [0, pi/2] by t -> -t, t -> pi - t (mod 2 pi).
+double fold_rim_angle(double x) {
+  const double t = std::abs(std::remainder(x, 2.0 * kPi));  // [0, pi]
+  return t > 0.5 * kPi ? kPi - t : t;
+}
+
+// The four images of the rim node (cos t, sin t), t in [0, pi/2], accumulated with weight wgt.
+struct FoldedRimIntegrand {
+  double mu, c1, c2, cn;
+  bool use_hat;
+  struct Sums {
+    double s1 = 0.0;  // ∫ cos^2 t (1/T1(t) + 1/T1(-t))
+    double s2 = 0.0;  // ∫ sin^2 t (1/T2(t) + 1/T2(pi - t))
+    double sh = 0.0;  // ∫ sum of |w| (|c| <= 1) or of g (|c| > 1) over the images
+    double h1 = 0.0;  // ∫ cos^2 t (g1(t)/T1(t) + g1(-t)/T1(-t))   (|c| > 1)
+    double h2 = 0.0;  // ∫ sin^2 t (g2(t)/T2(t) + g2(pi - t)/T2(pi - t))   (|c| > 1)
+  };
+  void add(double ct, double st, double wgt, Sums& r) const {
+    const double x0 = ct - c1;   // t and -t
+    const double x1 = -ct - c1;  // pi - t and pi + t
+    const double y0 = mu * st - c2;
+    const double y1 = -mu * st - c2;
+    const double w0 = std::sqrt(x0 * x0 + y0 * y0);  // t
+    const double w1 = std::sqrt(x0 * x0 + y1 * y1);  // -t
+    const double w2 = std::sqrt(x1 * x1 + y0 * y0);  // pi - t
+    const double w3 = std::sqrt(x1 * x1 + y1 * y1);  // pi + t
+    const double t1a = w0 + w2;
+    const double t1b = w1 + w3;
+    const double t2a = w0 + w1;
+    const double t2b = w2 + w3;
+    const double c2t = ct * ct;
+    const double s2t = st * st;
+    r.s1 += wgt * c2t * (1.0 / t1a + 1.0 / t1b);
+    r.s2 += wgt * s2t * (1.0 / t2a + 1.0 / t2b);
+    if (!use_hat) {
+      r.sh += wgt * (w0 + w1 + w2 + w3);
+      return;
+    }
+    const double r2 = c2t + mu * mu * s2t;  // |rho|^2
+    const double a = 2.0 * ct * c1;          // 2 rho.c = +-a +-b over the images
+    const double b = 2.0 * mu * st * c2;
+    const double g0 = (r2 - a - b) / (w0 + cn);
+    const double g1 = (r2 - a + b) / (w1 + cn);
+    const double g2 = (r2 + a - b) / (w2 + cn);
+    const double g3 = (r2 + a + b) / (w3 + cn);
+    r.sh += wgt * (g0 + g1 + g2 + g3);
+    r.h1 += wgt * c2t * ((g0 + g2) / t1a + (g1 + g3) / t1b);
+    r.h2 += wgt * s2t * ((g0 + g1) / t2a + (g2 + g3) / t2b);
+  }
+};
+
+Result uniform_rim_folded(double mu, double c1, double c2) {
+  const double cn2 = c1 * c1 + c2 * c2;
+  const double cn = std::sqrt(cn2);
+  const bool use_hat = cn > 1.0;
+  const FoldedRimIntegrand integrand{mu, c1, c2, cn, use_hat};
+  FoldedRimIntegrand::Sums sums;
+  // The zeros' distances, or the lower bound on them, as in uniform_rim (the mirror images have
+  // the same distances).
+  const double ratio = cn2 / (1.0 + mu * mu);
+  const RimSteps& steps = rim_steps();
+  double d_min = kRimTrapezoidMaxDistance;
+  int half = 0;
+  RimZeros zeros;
+  if (ratio >= std::cosh(2.0 * kRimZeroFreeDistance)) {
+    half = static_cast<int>(std::ceil(0.5 * kRimTrapezoidExponent / kRimTrapezoidMaxDistance));
+    while (half < RimSteps::kMaxHalf && ratio < steps.cosh_2d[static_cast<std::size_t>(half)]) ++half;
+  } else {
+    zeros = rim_zeros(mu, c1, c2);
+    for (int k = 0; k < zeros.count; ++k) d_min = std::min(d_min, zeros.d[static_cast<std::size_t>(k)]);
+  }
+  if (half > 0 || d_min >= kRimSplitDistance) {
+    // The periodic trapezoid rule of uniform_rim, with n rounded up to a multiple of 4 so that its
+    // nodes are closed under the symmetries: t_j = 2 pi j/n, j = 0 .. n/4; the nodes t = 0 and
+    // pi/2 have two distinct images, not four, and are weighted 1/2.
+    const int n0 = half > 0 ? 2 * half : 2 * static_cast<int>(std::ceil(0.5 * kRimTrapezoidExponent / d_min));
+    const int n = 4 * ((n0 + 3) / 4);
+    const double dt = 2.0 * kPi / n;
+    const double cd = std::cos(dt);
+    const double sd = std::sin(dt);
+    double ct = 1.0;
+    double st = 0.0;
+    for (int j = 0; j <= n / 4; ++j) {
+      if (4 * j == n) {  // t = pi/2 exactly
+        ct = 0.0;
+        st = 1.0;
+      }
+      integrand.add(ct, st, (j == 0 || 4 * j == n) ? 0.5 * dt : dt, sums);
+      const double c_next = ct * cd - st * sd;
+      st = st * cd + ct * sd;
+      ct = c_next;
+    }
+  } else {
+    // Graded Gauss-Legendre panels on [0, pi/2], split at the folded real parts of the near zeros
+    // and each arc halved, as uniform_rim does on the whole rim. A zero at x + i d stands for
+    // x' + i d, -x' + i d and pi - x' + i d near [0, pi/2] (x' = fold_rim_angle(x)).
+    // The zeros of the first quadratic only: the others are their conjugates (the same x, d).
+    zeros.count = zeros.conjugate_free;
+    std::array<double, 4> folded{};
+    for (int k = 0; k < zeros.count; ++k) {
+      const auto kk = static_cast<std::size_t>(k);
+      const std::complex<double> z = zeros.z[kk];
+      folded[kk] = fold_rim_angle(std::atan2(z.imag(), z.real()));
+    }
+    std::array<double, 6> split{};
+    int n_split = 0;
+    split[static_cast<std::size_t>(n_split++)] = 0.0;
+    split[static_cast<std::size_t>(n_split++)] = 0.5 * kPi;
+    for (int k = 0; k < zeros.count; ++k) {
+      if (zeros.d[static_cast<std::size_t>(k)] >= kRimSplitDistance) continue;
+      const double x = folded[static_cast<std::size_t>(k)];
+      bool seen = false;
+      for (int j = 0; j < n_split; ++j) {
+        if (std::abs(x - split[static_cast<std::size_t>(j)]) < 1e-12) seen = true;
+      }
+      if (!seen) split[static_cast<std::size_t>(n_split++)] = x;
+    }
+    std::sort(split.begin(), split.begin() + n_split);
+    Panels panels;
+    for (int i = 0; i + 1 < n_split; ++i) {
+      const double a = split[static_cast<std::size_t>(i)];
+      const double b = split[static_cast<std::size_t>(i + 1)];
+      for (int j = 0; j < 2; ++j) {  // the arc halved: at most one near zero, at one end
+        const double t0 = j == 0 ? a : 0.5 * (a + b);
+        const double t1 = j == 0 ? 0.5 * (a + b) : b;
+        if (!(t1 > t0)) continue;
+        const double m = 0.5 * (t0 + t1);
+        const double T = std::tan(0.25 * (t1 - t0));
+        const double cm = std::cos(m);
+        const double sm = std::sin(m);
+        Singularities sing;
+        sing.z[0] = {0.0, kWeierstrassPoleMargin};
+        sing.count = 1;
+        for (int k = 0; k < zeros.count; ++k) {
+          const auto kk = static_cast<std::size_t>(k);
+          const double d = zeros.d[kk];
+          if (d < kRimOnEdge) continue;
+          const double ch = std::cosh(d);
+          const double sh = std::sinh(d);
+          for (const double x : {folded[kk], -folded[kk], kPi - folded[kk]}) {  // at most 1 + 2 x 3
+            sing.z[static_cast<std::size_t>(sing.count++)] =
+                weierstrass_image({std::cos(x), std::sin(x), ch, sh}, cm, sm);
+          }
+        }
+        build_panels(T, sing, false, panels, true);
+        for_each_node_pair(panels, [&](Lanes cphi, Lanes sphi, Lanes wgt) {
+          for (int l = 0; l < 2 && wgt[l] != 0.0; ++l) {
+            integrand.add(cm * cphi[l] - sm * sphi[l], sm * cphi[l] + cm * sphi[l], wgt[l], sums);
+          }
+        });
+      }
+    }
+  }
+  Result r;
+  r.g1 = -(4.0 / kPi) * c1 * sums.s1;
+  r.g2 = -(4.0 / kPi) * c2 * sums.s2;
+  if (use_hat) {
+    r.h = (1.0 / (3.0 * kPi)) * sums.sh + (4.0 / (3.0 * kPi * cn)) * (c1 * c1 * sums.h1 + c2 * c2 * sums.h2);
+  } else {
+    r.h = (1.0 / (3.0 * kPi)) * sums.sh + (2.0 / 3.0) * (c1 * r.g1 + c2 * r.g2);
+  }
+  return r;
 }
 
 // Uniform pressure, ICR inside: the ICR reduction with the chord factor sqrt(D)
@@ -1299,7 +1489,15 @@ FrictionForces ExactLaw::do_evaluate(const ContactInput& in) const {
       bool done = false;
       const bool window = mu >= kSlenderAxisRatio && rho2 > 1.0;
       if (window) r = uniform_window(mu, p, q, std::sqrt(rho2), s, done);
-      if (!done) r = window ? uniform_window_graded(mu, p, q, std::sqrt(rho2), s) : uniform_rim(mu, p, mu * q);
+      if (!done) {
+        if (window) {
+          r = uniform_window_graded(mu, p, q, std::sqrt(rho2), s);
+        } else if (mu < kRimFoldedMaxAxisRatio) {
+          r = uniform_rim_folded(mu, p, s * cpsi);
+        } else {
+          r = uniform_rim(mu, p, mu * q);
+        }
+      }
     }
   } else if (pressure_ == Pressure::punch) {
     r = icr_reduction<true>(mu, e2, p, q, rho2, s);

@@ -58,9 +58,11 @@ inline constexpr double kExactLawPressureAccuracy = 1e-10;
 /// pressure model (friction/pressure.h; docs/pressure-models.md): Hertz (the default, as above),
 /// uniform or the flat punch. Punch: the same reduction, with the chord factor D^0 (the whole
 /// period is again a polynomial in the ICR, the window integrand is smooth to its ends). Uniform:
-/// the divergence theorem turns the patch integrals into integrals over its rim of |rho - c|
-/// (times polynomials), done by Gauss-Legendre panels graded towards the complex zeros of
-/// |rho(t) - c|^2.
+/// the ICR reduction in the Jacobi amplitude (ICR inside) or in the window (outside); near the rim
+/// and for b/a < 0.01 the divergence theorem turns the patch integrals into integrals over its rim
+/// of |rho - c| (times polynomials), done by Gauss-Legendre panels graded towards the complex zeros
+/// of |rho(t) - c|^2, and for b/a < 1e-4 folded by the patch's mirror symmetries, so that no
+/// O(b/a) sum is divided by b/a (docs/pressure-models.md §3).
 class ExactLaw final : public FrictionLaw {
  public:
   explicit ExactLaw(Pressure pressure = Pressure::hertz) : pressure_(pressure) {}

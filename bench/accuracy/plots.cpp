@@ -134,8 +134,8 @@ void write_heat(const StudyResult& study, const LawValues& law, const fs::path& 
   const int lo = static_cast<int>(std::round(std::log10(kHeatFloor)));
   const int hi = static_cast<int>(std::round(std::log10(kHeatCeiling)));
   gp << "set multiplot layout " << mus.size() << ",3 title "
-     << support::gnuplot_quoted(law.law + " against exact: |law − exact| (max over sign Ω); F1, F2 per kN, "
-                                          "M per kNa; white: non-finite")
+     << support::gnuplot_text(law.law + " against exact: |law − exact| (max over sign Ω); F1, F2 per k·N, "
+                                        "M per k·N·a; white: non-finite")
      << " font ',13'\n"
      << "set xlabel 'log_{10} s,  s = U/(a|Ω|)'\nset ylabel 'ψ (deg)'\n"
      << "set xrange [" << g(std::log10(study.grid.s().front())) << ":" << g(std::log10(study.grid.s().back()))
@@ -143,7 +143,7 @@ void write_heat(const StudyResult& study, const LawValues& law, const fs::path& 
      << "set cbrange [" << lo << ":" << hi << "]\n" << log_cbtics(lo, hi) << '\n'
      << "set palette defined (0 '#0d0887', 1 '#6a00a8', 2 '#b12a90', 3 '#e16462', 4 '#fca636', 5 '#f0f921')\n"
      << "set tics out\n";
-  const char* comp[] = {"F1/(kN)", "F2/(kN)", "M/(kNa)"};
+  const char* comp[] = {"F1/(k·N)", "F2/(k·N)", "M/(k·N·a)"};
   for (std::size_t k = 0; k < mus.size(); ++k) {
     for (int c = 0; c < 3; ++c) {
       gp << "set title " << support::gnuplot_quoted("|Δ" + std::string(comp[c]) + "|,  μ = " + g(study.grid.mu()[mus[k]]))
@@ -189,14 +189,14 @@ void write_singular(const StudyResult& study, const LawValues& law, const LawSum
   std::ostringstream gp;
   const std::size_t rows = (mus.size() + 2) / 3;
   script_head(gp, terminal, name, 1500, 430 * static_cast<int>(rows) + 60);
-  // Two title lines: gnuplot_quoted strings joined by gnuplot's string operator '.' around "\n".
+  // Two title lines: gnuplot_text strings joined by gnuplot's string operator '.' around "\n".
   const std::string line1 =
       law.law + ": where it is singular" +
       (sum.has_denominators ? " (sign of each denominator of eq. (8): a colour change along s is a real pole)" : "");
   const std::string line2 = "black: an output non-finite or > " + support::significant(kSingularMagnitude, 6) +
-                            " in size (F1, F2 per kN, M per kNa) at either sign of Ω";
-  gp << "set multiplot layout " << rows << ",3 title " << support::gnuplot_quoted(line1) << ".\"\\n\"."
-     << support::gnuplot_quoted(line2) << " font ',13'\n"
+                            " in size (F1, F2 per k·N, M per k·N·a) at either sign of Ω";
+  gp << "set multiplot layout " << rows << ",3 title " << support::gnuplot_text(line1) << ".\"\\n\"."
+     << support::gnuplot_text(line2) << " font ',13'\n"
      << "set xlabel 'log_{10} s,  s = U/(a|Ω|)'\nset ylabel 'ψ (deg)'\n"
      << "set xrange [" << g(std::log10(grid.s().front())) << ":" << g(std::log10(grid.s().back()))
      << "]\nset yrange [0:180]\nset ytics 0,45,180\nset tics out\n"
@@ -270,7 +270,7 @@ void write_curves(const StudyResult& study, const CurveCase& cc, const fs::path&
      << " font ',13'\n"
      << "set logscale x\nset format x '10^{%L}'\nset xlabel 's = U/(a|Ω|)'\nset grid\n"
      << "set key right bottom font ',9' spacing 1.1\n";
-  const char* comp[] = {"F1/(kN)", "F2/(kN)", "M/(kNa)"};
+  const char* comp[] = {"F1/(k·N)", "F2/(k·N)", "M/(k·N·a)"};
   for (const std::size_t isign : {std::size_t{1}, std::size_t{0}}) {
     for (std::size_t c = 0; c < 3; ++c) {
       // y range: the exact curve's range, widened so that a sound law's curve fits.
@@ -286,7 +286,7 @@ void write_curves(const StudyResult& study, const CurveCase& cc, const fs::path&
         gp << (j == 0 ? "" : ", \\\n     ") << support::gnuplot_quoted(name + ".dat") << " index " << isign
            << " using 1:" << col << " with lines "
            << (j == 0 ? "lc rgb 'black' lw 3" : "lw 2 dt " + std::to_string(1 + (j - 1) % 5) + " lc " + std::to_string(j))
-           << " title " << support::gnuplot_quoted(names[j]);
+           << " title " << support::gnuplot_text(names[j]);
       }
       gp << '\n';
     }

@@ -280,7 +280,8 @@ void write_tables_markdown(std::ostream& out, const StudyResult& study, const Ru
       << ", " << short_number(g.s().back()) << "], " << g.mu().size() << " axis ratios μ = b/a over ["
       << short_number(g.mu().front()) << ", 1], " << g.psi().size()
       << " orientations ψ over [0°, 180°], both signs of Ω: " << g.size()
-      << " points per law. Errors are law − exact, per kN (F1, F2) and per kNa (M); max and RMS are "
+      << " points per law. Errors are law − exact, per kN = k·N, the friction coefficient times the normal force "
+         "(F1, F2), and per kNa = k·N·a (M); max and RMS are "
          "over the points where the law's output is finite (non-finite outputs are counted apart).\n\n";
 
   out << "## Overall errors\n\n";
@@ -387,16 +388,18 @@ void write_tables_markdown(std::ostream& out, const StudyResult& study, const Ru
   }
 }
 
-void write_readme(std::ostream& out, const StudyResult& study, const RunInfo& run) {
+void write_readme(std::ostream& out, const StudyResult& study, const RunInfo& run, const StudyFiles& files) {
   out << "# Accuracy study output\n\n"
       << "Produced by `" << (run.command.empty() ? "frictionlab accuracy" : run.command) << "`"
       << (run.date.empty() ? "" : " on " + run.date) << ". Every law is compared with `"
       << study.reference.law << "` at " << study.grid.size()
       << " dimensionless contacts: a = 1 m, b = μ m, U = s m/s, Ω = ±1 1/s, N = 1 N, k = 1, so F1 and F2 are in "
-         "units of kN, M in units of kNa and the power F1 U + M Ω in units of kN a|Ω|.\n\n"
+         "units of kN = k·N (the friction coefficient times the normal force), M in units of kNa = k·N·a and the "
+         "power F1 U + M Ω in units of kN a|Ω|.\n\n"
       << "Numbers have 10 significant digits; non-finite values are written nan, inf, -inf.\n\n"
       << "## Files\n\n"
-      << "* `points/<law>.csv`: one row per grid point (the reference too, as `points/" << study.reference.law
+      << (files.point_tables ? "* `points/<law>.csv`" : "* `points/<law>.csv` (not written by this run: add `--points`)")
+      << ": one row per grid point (the reference too, as `points/" << study.reference.law
       << ".csv`, with zero errors). Columns:\n"
       << "  `s` = U/(a|Ω|); `mu` = b/a; `psi` (rad) from the slip direction to the major axis; "
          "`sign` of Ω (−1 or 1);\n"
@@ -428,21 +431,22 @@ void write_readme(std::ostream& out, const StudyResult& study, const RunInfo& ru
 }
 
 void write_study_files(const StudyResult& study, const std::filesystem::path& dir,
-                       const RunInfo& run, std::ostream* progress) {
+                       const RunInfo& run, std::ostream* progress, const StudyFiles& files) {
   namespace fs = std::filesystem;
-  fs::create_directories(dir / "points");
+  fs::create_directories(dir);
   const auto t0 = std::chrono::steady_clock::now();
 
-  // The per-point tables are the bulk of the output (~30 MB per law on the default grid): write
-  // them in parallel, one law per worker.
+  // The per-point tables, when asked for, are the bulk of the output (18-26 MB per law on the
+  // default grid): written in parallel, one law per worker.
   std::vector<std::pair<fs::path, std::function<void(std::ostream&)>>> jobs;
-  jobs.emplace_back(dir / "points" / (friction::law_file_stem(study.reference.law) + ".csv"), [&](std::ostream& out) {
-    write_points_csv(out, study.grid, study.reference, study.reference);
-  });
-  for (const auto& values : study.values) {
-    jobs.emplace_back(dir / "points" / (friction::law_file_stem(values.law) + ".csv"), [&study, &values](std::ostream& out) {
-      write_points_csv(out, study.grid, values, study.reference);
-    });
+  if (files.point_tables) {
+    fs::create_directories(dir / "points");
+    jobs.emplace_back(dir / "points" / (friction::law_file_stem(study.reference.law) + ".csv"),
+                      [&](std::ostream& out) { write_points_csv(out, study.grid, study.reference, study.reference); });
+    for (const auto& values : study.values) {
+      jobs.emplace_back(dir / "points" / (friction::law_file_stem(values.law) + ".csv"),
+                        [&study, &values](std::ostream& out) { write_points_csv(out, study.grid, values, study.reference); });
+    }
   }
   std::atomic<std::size_t> next{0};
   std::exception_ptr error;
@@ -474,10 +478,12 @@ void write_study_files(const StudyResult& study, const std::filesystem::path& di
                [&](std::ostream& out) { write_poles_csv(out, study.grid, law); });
   }
   write_file(dir / "accuracy_tables.md", [&](std::ostream& out) { write_tables_markdown(out, study, run); });
-  write_file(dir / "README.md", [&](std::ostream& out) { write_readme(out, study, run); });
+  write_file(dir / "README.md", [&](std::ostream& out) { write_readme(out, study, run, files); });
   if (progress) {
-    *progress << "accuracy: wrote " << jobs.size() << " point tables and the summaries to "
-              << dir.string() << " in "
+    *progress << "accuracy: wrote "
+              << (jobs.empty() ? std::string("the summaries (no per-point tables: --points writes them)")
+                               : std::to_string(jobs.size()) + " point tables and the summaries")
+              << " to " << dir.string() << " in "
               << std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() << " s"
               << std::endl;
   }

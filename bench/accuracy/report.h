@@ -1,8 +1,12 @@
 #pragma once
-// The files of the accuracy study: per-point CSV tables, summaries and ready-to-paste markdown.
+// The files of the accuracy study: summaries, ready-to-paste markdown and, on request, per-point
+// CSV tables.
 //
 // Layout under the output folder DIR (README.md written there documents every column):
-//   DIR/points/<law>.csv        one row per grid point (the reference too, as points/exact.csv)
+//   DIR/points/<law>.csv        one row per grid point (the reference too, as points/exact.csv);
+//                               only with StudyFiles::point_tables (18-26 MB per law on the
+//                               default grid, 165 MB for the default laws and the reference; the
+//                               rest of the study, figures included, is 4.8 MB)
 //   DIR/summary.csv             one row per law, over the whole grid
 //   DIR/summary_by_mu.csv       one row per law and mu
 //   DIR/summary_by_region.csv   one row per law and region (s bands, sign of Omega)
@@ -48,12 +52,18 @@ void write_summary_by_region_csv(std::ostream& out, const StudyResult& study);
 void write_poles_csv(std::ostream& out, const Grid& grid, const LawSummary& law);
 /// The markdown tables (accuracy_tables.md).
 void write_tables_markdown(std::ostream& out, const StudyResult& study, const RunInfo& run);
-/// The description of the files and columns (README.md).
-void write_readme(std::ostream& out, const StudyResult& study, const RunInfo& run);
+/// Which of the optional files to write.
+struct StudyFiles {
+  bool point_tables = false;  ///< points/<law>.csv (the bulk of the output: 18-26 MB per law by default)
+};
 
-/// Writes every file above under `dir` (created if missing; existing files are replaced).
-/// Throws std::runtime_error naming the file if one cannot be written.
+/// The description of the files and columns (README.md).
+void write_readme(std::ostream& out, const StudyResult& study, const RunInfo& run, const StudyFiles& files = {});
+
+/// Writes every file above under `dir` (created if missing; existing files are replaced), the
+/// per-point tables only if `files` asks for them. Throws std::runtime_error naming the file if
+/// one cannot be written.
 void write_study_files(const StudyResult& study, const std::filesystem::path& dir,
-                       const RunInfo& run, std::ostream* progress = nullptr);
+                       const RunInfo& run, std::ostream* progress = nullptr, const StudyFiles& files = {});
 
 }  // namespace frictionlab::accuracy

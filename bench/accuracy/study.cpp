@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "friction/registry.h"
+#include "friction/support/number_format.h"
 
 namespace frictionlab::accuracy {
 namespace {
@@ -141,9 +142,10 @@ StudyResult run_study(const StudyOptions& options) {
       sum.poles = pole_brackets(grid, *known_denominators(name));
     }
     if (log) {
-      *log << "accuracy: " << name << ": " << sum.seconds << " s; max |error| F1 "
-           << sum.overall.error[0].max_abs << ", F2 " << sum.overall.error[1].max_abs << ", M "
-           << sum.overall.error[2].max_abs << std::endl;
+      // The errors are per k·N (forces) and per k·N·a (moment): say so, or "F1 0.2" reads as newtons.
+      const auto err = [&](int c) { return support::significant(sum.overall.error[c].max_abs, 6); };
+      *log << "accuracy: " << name << ": " << support::significant(sum.seconds, 6) << " s; max |error| F1 " << err(0)
+           << " k·N, F2 " << err(1) << " k·N, M " << err(2) << " k·N·a" << std::endl;
     }
     result.values.push_back(std::move(values));
     result.summaries.push_back(std::move(sum));

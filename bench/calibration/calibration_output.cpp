@@ -62,9 +62,9 @@ void write_scan_plot(const CalibrationResult& r, const fs::path& plots, const st
      << " title 'Largest torque error over the grid against the coefficient c (solid: circle, dashed: mu in "
      << g3(r.grid.spec().mu_min) << "..1)' font ',12'\n"
      << "set logscale x\nset xlabel 'c  (Rb/a, or torsional/(k a), r\\_spin/(k a))'\n"
-     << "set ylabel 'max |ΔM| / (kNa)'\nset yrange [0:*]\nset grid\nset key top center\n";
+     << "set ylabel 'max |ΔM| / (k·N·a)'\nset yrange [0:*]\nset grid\nset key top center\n";
   for (const auto& law : laws) {
-    gp << "set title " << support::gnuplot_quoted(law) << "\nplot ";
+    gp << "set title " << support::gnuplot_text(law) << "\nplot ";
     bool first = true;
     for (std::size_t b = 0; b < r.scans.size(); ++b) {
       const auto& s = r.scans[b];
@@ -74,7 +74,7 @@ void write_scan_plot(const CalibrationResult& r, const fs::path& plots, const st
       gp << (first ? "" : ", \\\n     ") << "'calibration_scan.dat' index " << b
          << " using 1:2 with lines lw 2 dt " << (s.scope == Scope::circle ? 1 : 2) << " lc rgb '"
          << kColours[colour % 6] << "' title "
-         << support::gnuplot_quoted(s.pressure + (s.scope == Scope::circle ? ", circle" : ", grid"));
+         << support::gnuplot_text(s.pressure + (s.scope == Scope::circle ? ", circle" : ", grid"));
       first = false;
     }
     gp << '\n';
@@ -108,8 +108,8 @@ void write_forces_plot(const CalibrationResult& r, const fs::path& plots, const 
      << "set logscale x\nset xlabel 's = U/(a|Ω|)'\nset grid\nset key bottom right font ',9'\n";
   for (const int row : {0, 1}) {
     for (const auto& p : ps) {
-      gp << "set title " << support::gnuplot_quoted("pressure " + p) << "\nset ylabel '"
-         << (row == 0 ? "F1/(kN)" : "M/(kNa)") << "'\n"
+      gp << "set title " << support::gnuplot_text("pressure " + p) << "\nset ylabel '"
+         << (row == 0 ? "F1/(k·N)" : "M/(k·N·a)") << "'\n"
          << (row == 0 ? "set key bottom right\n" : "set key top right\n") << "plot ";
       bool first = true;
       std::size_t colour = 0;
@@ -120,7 +120,7 @@ void write_forces_plot(const CalibrationResult& r, const fs::path& plots, const 
         gp << (first ? "" : ", \\\n     ") << "'calibration_forces.dat' index " << b << " using 1:" << 2 + row
            << " with lines lw " << (exact ? 3 : 2) << " dt " << (exact ? 1 : 1 + colour % 4) << " lc rgb '"
            << (exact ? std::string("black") : std::string(kColours[colour % 6])) << "' title "
-           << support::gnuplot_quoted(c.label) << " noenhanced";  // specs hold '_' (r_spin)
+           << support::gnuplot_text(c.label);
         if (!exact) ++colour;
         first = false;
       }
@@ -175,7 +175,8 @@ void write_calibration_markdown(std::ostream& out, const CalibrationResult& r, c
       << support::fixed(run.seconds, 1) << " s). Grid: " << spec.s_points << " slip ratios s in ["
       << g3(spec.s_min) << ", " << g3(spec.s_max) << "], " << spec.mu_points << " axis ratios mu in ["
       << g3(spec.mu_min) << ", 1], " << spec.psi_points
-      << " orientations, both signs of Omega. Errors per kN (F1, F2) and kNa (M); c is the pure-spin "
+      << " orientations, both signs of Omega. Errors per kN = k·N, the friction coefficient times the normal "
+         "force (F1, F2), and per kNa = k·N·a (M); c is the pure-spin "
          "torque per kNa the coefficient gives.\n\n";
   for (const Scope scope : {Scope::circle, Scope::grid}) {
     out << (scope == Scope::circle ? "**Circle** (mu = 1: a sphere on a plane)"

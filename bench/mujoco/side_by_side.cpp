@@ -227,16 +227,16 @@ int main(int argc, char** argv) {
        << "# Redraw: cd into this folder, then `gnuplot side_by_side.gp`.\n"
        << "set terminal pngcairo size 1500,460 enhanced font 'Sans,11'\nset output 'side_by_side.png'\n"
        << "set encoding utf8\nset grid\nset xlabel 't (s)'\n"
-       << "set multiplot layout 1,3 title " << support::gnuplot_quoted(
+       << "set multiplot layout 1,3 title " << support::gnuplot_text(
               "Sphere R = " + g4(R) + " m sliding and spinning: MuJoCo against frictionlab (torsional = " +
               g4(torsional) + " m)") << " font ',12'\n";
     const auto panel = [&](const std::string& title, int column, double xmax, const std::string& ylabel) {
-      gp << "set title " << support::gnuplot_quoted(title) << "\nset ylabel " << support::gnuplot_quoted(ylabel)
+      gp << "set title " << support::gnuplot_text(title) << "\nset ylabel " << support::gnuplot_text(ylabel)
          << "\nset xrange [0:" << g4(xmax) << "]\nplot ";
       for (std::size_t b = 0; b < runs.size(); ++b) {
         gp << (b ? ", \\\n     " : "") << "'side_by_side.dat' index " << b << " using 1:" << column
            << " with lines lw " << (b == 0 ? 3 : 2) << " dt " << 1 + b % 4 << " lc rgb '" << colours[b % 5]
-           << "' title " << support::gnuplot_quoted(runs[b].label);
+           << "' title " << support::gnuplot_text(runs[b].label);
       }
       gp << '\n';
     };

@@ -37,6 +37,7 @@ struct AccuracyOptions {
   long long psi_points = static_cast<long long>(accuracy::GridSpec{}.psi_points);
   long long threads = 0;
   bool no_plots = false;
+  bool points = false;
   std::string command;  // as typed, for the provenance line of the tables
 };
 
@@ -74,7 +75,9 @@ void run(const AccuracyOptions& opt) {
   info.command = opt.command;
   info.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   const std::filesystem::path dir(opt.out);
-  accuracy::write_study_files(study, dir, info, &std::cerr);
+  accuracy::StudyFiles files;
+  files.point_tables = opt.points;
+  accuracy::write_study_files(study, dir, info, &std::cerr, files);
   accuracy::PlotOptions po;
   po.draw = !opt.no_plots;
   (void)accuracy::write_plots(study, dir, po, &std::cerr);
@@ -91,7 +94,8 @@ void register_accuracy_command(CLI::App& app) {
       "accuracy",
       "Accuracy study: every law against `exact` on a grid of slip ratio s = U/(a|Omega|), axis\n"
       "ratio mu = b/a, orientation psi and sign(Omega); writes CSV tables, markdown tables and\n"
-      "gnuplot figures under --out (see DIR/README.md)");
+      "gnuplot figures under --out (see DIR/README.md): ~5 MB on the default grid; --points adds the\n"
+      "per-point tables, 18-26 MB per law (~165 MB for the default laws)");
   cmd->add_option("--out", opt->out, "output folder (created; existing files are replaced)")->required();
   cmd->add_option("--laws", opt->laws,
                   "law specs to compare with the reference, separated by ';' or ',' (default: every registered "
@@ -109,6 +113,8 @@ void register_accuracy_command(CLI::App& app) {
   cmd->add_option("--threads", opt->threads, "worker threads (0: one per hardware thread)")
       ->capture_default_str();
   cmd->add_flag("--no-plots", opt->no_plots, "write the gnuplot data and scripts but do not run gnuplot");
+  cmd->add_flag("--points", opt->points,
+                "also write points/<law>.csv, one row per grid point (18-26 MB per law on the default grid)");
   cmd->callback([opt, cmd] {
     opt->command = retypable_command(*cmd, {"--threads"});  // threads do not change the results
     run(*opt);

@@ -73,7 +73,7 @@ void register_calibrate_command(CLI::App& app) {
       "Calibration of the engines' spin-friction laws (ellipsoidal, mujoco-elliptic, decoupled) against\n"
       "`exact` for each pressure model: the coefficient exact at pure spin and the one minimising the\n"
       "largest torque error on the accuracy grid, with the errors left; writes CSV and markdown tables\n"
-      "and gnuplot figures under --out (docs/engines.md)");
+      "and gnuplot figures under --out (docs/engines.md); ~0.6 MB");
   cmd->add_option("--out", opt->out, "output folder (created; existing files are replaced)")->required();
   cmd->add_option("--laws", opt->laws, "comma-separated engine laws (default: all)")->delimiter(',');
   cmd->add_option("--pressures", opt->pressures, "comma-separated pressure models of exact (default: all)")

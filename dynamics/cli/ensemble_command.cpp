@@ -13,7 +13,10 @@
 #include <string>
 
 #include "dynamics/cli/commands.h"
+#include "dynamics/cli/option_values.h"
 #include "dynamics/ensemble/ensemble_job.h"
+#include "dynamics/ensemble/mpi_ensemble.h"
+#include "dynamics/shipped_data.h"
 #include "friction/support/errors.h"
 #include "friction/support/interrupt_guard.h"
 #include "friction/support/number_format.h"
@@ -26,7 +29,7 @@ constexpr int kExitIncomplete = 3;
 struct EnsembleCliOptions {
   std::string study;
   std::string out;
-  int threads = 0;
+  long long threads = 0;
   bool resume = false;
   bool hdf5 = false;
   bool no_figures = false;
@@ -34,17 +37,31 @@ struct EnsembleCliOptions {
 
 void run(const EnsembleCliOptions& opt) {
   namespace ens = dynamics::ensemble;
-  ens::JobOptions job = ens::ensemble_job_options(opt.study, opt.out, opt.threads, opt.resume, opt.hdf5, !opt.no_figures);
+  const std::string study = dynamics::find_shipped_file(opt.study, "studies", "study").string();
+  ens::JobOptions job = ens::ensemble_job_options(study, opt.out, int_option("--threads", opt.threads), opt.resume,
+                                                  opt.hdf5, !opt.no_figures);
   job.log = stderr;
   job.live = isatty(STDERR_FILENO) != 0;
   ens::JobOutcome outcome;
+  const std::string runs_csv = (std::filesystem::path(opt.out) / "runs.csv").string();
+  // Under mpirun the signal is followed by SIGKILL within a second (friction/support/
+  // interrupt_guard.h): rank 0 says at once what stopped it and what is kept.
+  const bool announce = ens::launched_by_mpi() && ens::launcher_rank() == 0;
+  int signal = 0;
   {
     // Ctrl-C, kill or a lost terminal: the runs in flight stop between steps (not recorded), the
     // finished ones are in runs.csv; --resume continues.
-    const support::InterruptGuard interrupts;
+    const support::InterruptGuard interrupts(
+        announce ? "frictionlab: ensemble: stopped by {signal}: every finished run is kept in " + runs_csv +
+                       "; rerun with --resume to continue"
+                 : std::string());
     job.cancel = &interrupts.flag();
     outcome = ens::run_ensemble_job(job);
+    signal = interrupts.signal_number();
   }
+  // What the guard already said (announce) is not said twice.
+  const std::string stopped_by =
+      signal != 0 ? std::string("stopped by ") + support::InterruptGuard::signal_name(signal) : "interrupted";
   // A worker rank stopped because another rank failed, and that rank (0) reports it and exits 1.
   // This one exits 0: mpirun aborts the whole job as soon as a process exits non-zero, which would
   // kill rank 0 before it prints the error if this one got there first (as on a loaded machine).
@@ -53,6 +70,7 @@ void run(const EnsembleCliOptions& opt) {
     if (outcome.interrupted) throw CLI::RuntimeError(kExitIncomplete);
     return;
   }
+  const bool said = announce && signal != 0;
   const ens::SessionSummary& s = outcome.summary;
   std::printf("ensemble: %ld of %ld runs done (%ld this session: %ld failed, %ld stopped early) in %s s on %d rank%s x %d "
               "thread%s; wrote %s%s\n",
@@ -75,8 +93,10 @@ void run(const EnsembleCliOptions& opt) {
     throw CLI::RuntimeError(kExitIncomplete);
   }
   if (!s.complete) {
-    std::fprintf(stderr, "frictionlab: ensemble: %s; %ld runs remain: add --resume to continue\n",
-                 outcome.interrupted ? "interrupted" : "incomplete", s.remaining());
+    if (!said)
+      std::fprintf(stderr, "frictionlab: ensemble: %s; %ld runs are kept in %s, %ld remain: add --resume to continue\n",
+                   outcome.interrupted ? stopped_by.c_str() : "incomplete", s.done_before + s.done_now,
+                   runs_csv.c_str(), s.remaining());
     throw CLI::RuntimeError(kExitIncomplete);
   }
 }
@@ -87,11 +107,17 @@ void register_ensemble_command(CLI::App& app) {
   auto opt = std::make_shared<EnsembleCliOptions>();
   auto* cmd = app.add_subcommand(
       "ensemble", "Run a study: every (start x replica x law) run on all cores, or over MPI ranks under mpirun; "
-                  "runs.csv and a report against the chaos floor (docs/ensembles.md)");
-  cmd->add_option("study", opt->study, "The study file (TOML)")->required();
+                  "runs.csv and a report against the chaos floor (docs/ensembles.md); ~0.4 kB a run in runs.csv, "
+                  "~0.1 MB of report and maps, --hdf5 up to ~50 kB a run");
+  cmd->add_option("study", opt->study,
+                  "The study file (TOML), or the name of a shipped one (smoke, egg-printed-a, ...: looked up in "
+                  "data/studies here, then the installed data)")
+      ->required();
   cmd->add_option("--out", opt->out, "Output folder (created if needed)")->required();
   cmd->add_option("--threads", opt->threads, "Worker threads (default 0: one per core; under MPI, of rank 0: 1)");
-  cmd->add_flag("--resume", opt->resume, "Continue the ensemble in --out: redo only the runs not in its runs.csv");
+  cmd->add_flag("--resume", opt->resume,
+                "Continue the ensemble in --out: redo only the runs not in its runs.csv (one job per folder: a "
+                "folder another job holds is refused; SIGINT or SIGTERM stops a job, keeping every finished run)");
   cmd->add_flag("--hdf5", opt->hdf5, "Also write decimated trajectories to DIR/trajectories.h5");
   cmd->add_flag("--no-figures", opt->no_figures, "Write the maps' data and gnuplot scripts but do not run gnuplot");
   cmd->callback([opt] { run(*opt); });

@@ -1,5 +1,5 @@
 // `frictionlab friction`: evaluate one or more laws at one contact, or over a CSV table read from a
-// file or from stdin (friction/batch.h: streamed; several laws add a `law` column; --on-error).
+// file or from stdin (friction/batch.h: streamed; a `law` column however many laws; --on-error).
 
 #include <unistd.h>
 
@@ -7,7 +7,6 @@
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -18,6 +17,7 @@
 #include "dynamics/cli/commands.h"
 #include "friction/batch.h"
 #include "friction/registry.h"
+#include "friction/support/checked_input.h"
 
 namespace frictionlab::cli {
 namespace {
@@ -80,16 +80,19 @@ void run_table(const std::vector<const friction::FrictionLaw*>& laws, const std:
       std::cerr << "frictionlab: warning: input line " << line << ": " << reason << what << '\n';
     }
   };
-  friction::BatchSummary summary;
-  if (path == "-") {
-    summary = friction::evaluate_csv(laws, std::cin, std::cout, options);
-  } else {
-    std::error_code ec;
-    if (std::filesystem::is_directory(path, ec)) throw std::invalid_argument("the input " + path + " is a directory");
-    std::ifstream file(path);
-    if (!file) throw std::invalid_argument("cannot open the input " + path + ": " + std::strerror(errno));
-    summary = friction::evaluate_csv(laws, file, std::cout, options);
+  std::error_code ec;
+  if (path != "-" && std::filesystem::is_directory(path, ec))
+    throw std::invalid_argument("the input " + path + " is a directory");
+  // Read through read(2), stdin too: std::cin, synced with stdio, takes a read error for the end
+  // of the table (support/checked_input.h).
+  std::unique_ptr<support::InputStream> in;
+  try {
+    in = std::make_unique<support::InputStream>(path, "input");
+  } catch (const support::InputError& e) {
+    throw std::invalid_argument("cannot open the input " + path + ": " + std::strerror(e.error_number()));
   }
+  options.input_name = path == "-" ? "standard input" : "the input '" + path + "'";
+  const friction::BatchSummary summary = friction::evaluate_csv(laws, *in, std::cout, options);
   if (summary.bad > kMaxWarnings) {
     std::cerr << "frictionlab: warning: " << summary.bad << " bad rows in all (the first " << kMaxWarnings
               << " shown above)\n";
@@ -127,11 +130,10 @@ void run(const FrictionOptions& opt) {
   }
   const friction::ContactInput in{*opt.value[0], *opt.value[1], *opt.value[2], *opt.value[3],
                                   *opt.value[4], *opt.value[5], *opt.value[6]};
-  std::string text;
-  for (const auto* law : laws) {
-    if (laws.size() > 1) (text += friction::csv_field(law->spec())) += ',';
-    text += friction::format_forces(law->evaluate(in)) + '\n';
-  }
+  // The table's own columns, with a header, for one law as for several (friction/batch.h).
+  std::string text = std::string(friction::kOutputColumns) + '\n';
+  for (const auto* law : laws)
+    text += friction::csv_field(law->spec()) + ',' + friction::format_forces(law->evaluate(in)) + '\n';
   write_stdout(text);
 }
 
@@ -141,13 +143,14 @@ void register_friction_command(CLI::App& app) {
   auto opt = std::make_shared<FrictionOptions>();
   auto* cmd = app.add_subcommand(
       "friction",
-      "Evaluate friction laws: prints F1,F2,M (N, N, N m) for one contact, or, with no contact\n"
-      "options, reads a CSV table with columns U,Omega,a,b,psi,N,k (any order, other columns passed\n"
-      "through; blank lines and a UTF-8 byte-order mark are accepted) from INPUT, or from stdin if\n"
-      "INPUT is '-' or absent, and writes it back with F1,F2,M appended. Rows are streamed in input\n"
-      "order; with several laws a `law` column is added and each input row gives one row per law,\n"
-      "in the order of --law. With --on-error stop nothing is written unless every row succeeds\n"
-      "(the table is spooled to a temporary file, then copied to stdout)");
+      "Evaluate friction laws: prints a CSV table law,F1,F2,M (F1, F2 in N, M in N m), with its\n"
+      "header, one row per law, for one contact; or, with no contact options, reads a CSV table with\n"
+      "columns U,Omega,a,b,psi,N,k (any order, other columns passed through; blank lines and a UTF-8\n"
+      "byte-order mark are accepted) from INPUT, or from stdin if INPUT is '-' or absent, and writes\n"
+      "it back with law,F1,F2,M appended. The columns are the same for one law and for several. Rows\n"
+      "are streamed in input order; each input row gives one row per law, in the order of --law. With\n"
+      "--on-error stop nothing is written unless every row succeeds (the table is spooled to a\n"
+      "temporary file, then copied to stdout)");
   cmd->add_option("--law", opt->laws,
                   "law spec (NAME or NAME:KEY=VALUE[,KEY=VALUE], see `frictionlab laws`), or several separated "
                   "by ';' or by ','")

@@ -12,8 +12,10 @@ void register_laws_command(CLI::App& app) {
     std::size_t width = 0;
     const auto laws = friction::list_laws();
     for (const auto& law : laws) width = std::max(width, law.name.size());
+    // The summaries below write kN: define it before a reader meets it (not kilonewtons).
     std::cout << "Laws, and the parameters a spec NAME:KEY=VALUE[,KEY=VALUE] may set "
-                 "(e.g. exact:pressure=uniform):\n";
+                 "(e.g. exact:pressure=uniform); kN = k·N, the friction coefficient times the normal force "
+                 "(not kilonewtons), kNa = k·N·a:\n";
     for (const auto& law : laws) {
       std::cout << law.name << std::string(width + 2 - law.name.size(), ' ') << law.summary << '\n';
       if (!law.aliases.empty()) {

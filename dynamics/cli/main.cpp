@@ -3,7 +3,7 @@
 // Exit codes, for every subcommand: 0 done; 1 an error (bad input, CLI11's parse errors included,
 // or output that could not be written), reported as one line `frictionlab: error: ...` on stderr;
 // a subcommand may add its own (3: `simulate` stopped early, `paper` incomplete). --help prints
-// help and exits 0.
+// help and exits 0; --version prints `frictionlab VERSION` (the CMake project's) and exits 0.
 
 #include <algorithm>
 #include <csignal>
@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "dynamics/cli/commands.h"
+#include "dynamics/cli/option_values.h"
 #include "friction/support/checked_output.h"
 #include "friction/support/errors.h"
 
@@ -95,6 +96,8 @@ int main(int argc, char** argv) {
   CLI::App app{"frictionlab: exact vs approximate coupled dry friction (sliding + spinning)\n"
                "over an elliptic Hertz contact patch, at a point and along a motion."};
   app.require_subcommand(1);
+  app.set_version_flag("--version", std::string("frictionlab ") + FRICTIONLAB_VERSION,
+                       "Print `frictionlab VERSION` and exit");
   frictionlab::cli::register_laws_command(app);
   frictionlab::cli::register_friction_command(app);
   frictionlab::cli::register_simulate_command(app);
@@ -104,6 +107,7 @@ int main(int argc, char** argv) {
   frictionlab::cli::register_calibrate_command(app);
   frictionlab::cli::register_puck_study_command(app);
   frictionlab::cli::register_tippe_top_command(app);
+  frictionlab::cli::check_option_values(app);  // after every option exists
   // A file-size limit (ulimit -f) is then an error of the write that hits it, reported like a
   // full disk, instead of a signal that kills the process mid-row.
   std::signal(SIGXFSZ, SIG_IGN);
@@ -115,6 +119,8 @@ int main(int argc, char** argv) {
   } catch (const CLI::CallForHelp& e) {
     code = app.exit(e);
   } catch (const CLI::CallForAllHelp& e) {
+    code = app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
     code = app.exit(e);
   } catch (const CLI::RuntimeError& e) {
     code = e.get_exit_code();  // a subcommand's own exit code (3: stopped early); it said why

@@ -45,7 +45,7 @@ void register_puck_study_command(CLI::App& app) {
   auto opt = std::make_shared<PuckStudyCommandOptions>();
   auto* cmd = app.add_subcommand("puck-study",
                                  "Every friction law on the sliding-spinning puck: terminal regimes from the law, the\n"
-                                 "disk's stop times and terminal ratio, the elliptic puck's path (docs/puck.md)");
+                                 "disk's stop times and terminal ratio, the elliptic puck's path (docs/puck.md); ~3.3 MB");
   cmd->add_option("--out", opt->out, "output folder (created; existing files are replaced)")->required();
   cmd->add_option("--laws", opt->laws,
                   "law specs, separated by ';' or ',' (default: every registered law, and exact:pressure=uniform, "

@@ -1,10 +1,12 @@
 // `frictionlab simulate SCENARIO.toml [--law NAME] [--set key=value]... --out DIR`: one run of the
 // body-on-plane dynamics (docs/dynamics.md), or of the sliding-spinning puck for a scenario with
-// `model = "puck"` (docs/puck.md). Writes DIR/trajectory.csv, DIR/summary.json and
-// DIR/scenario.toml; prints one line on stdout. Exit codes:
+// `model = "puck"` (docs/puck.md). SCENARIO may also name a shipped scenario (dynamics/shipped_data.h).
+// Writes DIR/trajectory.csv, DIR/summary.json and DIR/scenario.toml; prints one line on stdout.
+// Exit codes:
 //   0  the run ended by t_end, rest or rolling;
-//   3  it stopped early (non-finite, law-error, integrator-failure, max-steps, interrupted by
-//      SIGINT, SIGTERM or SIGHUP): its files are written and the summary says why;
+//   3  it stopped early (stagnation, chatter, law-pole, non-finite, law-error, integrator-failure,
+//      max-steps, interrupted by SIGINT, SIGTERM or SIGHUP): its files are written and the summary
+//      says why;
 //   1  an error: bad input (nothing run), or an output that could not be written (the run stopped
 //      there; what was written is valid). One line on stderr.
 
@@ -22,6 +24,7 @@
 #include "dynamics/puck/puck_scenario_run.h"
 #include "dynamics/scenario.h"
 #include "dynamics/scenario_run.h"
+#include "dynamics/shipped_data.h"
 #include "friction/registry.h"
 #include "friction/support/checked_output.h"
 #include "friction/support/errors.h"
@@ -135,7 +138,8 @@ void run(const SimulateOptions& opt) {
     }
     overrides.push_back("contact.law=" + opt.law);
   }
-  const dynamics::ScenarioDocument document = dynamics::ScenarioDocument::read(opt.scenario);
+  const dynamics::ScenarioDocument document =
+      dynamics::ScenarioDocument::read(dynamics::find_shipped_file(opt.scenario, "scenarios", "scenario"));
   if (document.model(overrides) == "puck") {
     run_puck(dynamics::puck::resolve_puck(document, overrides), opt.out);
     return;
@@ -162,8 +166,14 @@ void run(const SimulateOptions& opt) {
 void register_simulate_command(CLI::App& app) {
   auto opt = std::make_shared<SimulateOptions>();
   auto* cmd = app.add_subcommand(
-      "simulate", "Integrate the motion of a body of revolution on a Hertz plane, or of a puck (model = \"puck\")");
-  cmd->add_option("scenario", opt->scenario, "Scenario file (TOML; see docs/dynamics.md)")->required();
+      "simulate",
+      "Integrate the motion of a body of revolution on a Hertz plane, or of a puck (model = \"puck\");\n"
+      "writes DIR/trajectory.csv (a row of ~470 bytes every run.output_dt: 0.1-11 MB for the shipped\n"
+      "scenarios; never more than run.max_output_bytes, default 100 MB), summary.json, scenario.toml");
+  cmd->add_option("scenario", opt->scenario,
+                  "Scenario file (TOML; see docs/dynamics.md), or the name of a shipped one (sphere-sliding, "
+                  "egg-printed-a, ...: looked up in data/scenarios here, then the installed data)")
+      ->required();
   cmd->add_option("--law", opt->law, "Friction law (overrides contact.law; see `frictionlab laws`)");
   cmd->add_option("--set", opt->set, "Override a scenario key, e.g. --set run.t_end=2 (repeatable)")
       ->allow_extra_args(false);

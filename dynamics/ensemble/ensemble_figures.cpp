@@ -13,7 +13,9 @@
 namespace frictionlab::dynamics::ensemble {
 namespace {
 
+using support::gnuplot_escaped;
 using support::gnuplot_quoted;
+using support::gnuplot_text;
 
 constexpr const char* kTerminal = "set encoding utf8\nset terminal png truecolor enhanced size %W%,%H% font 'DejaVuSans,10'";
 // Laws in order: black for the reference, then colours and dash types that survive grayscale.
@@ -77,7 +79,8 @@ struct Panel {
   std::string data;  // file name
 };
 
-// A multiplot of heat maps, `palette` the palette/cb settings.
+// A multiplot of heat maps, `palette` the palette/cb settings; `title` in gnuplot's enhanced-text
+// markup (user text in it escaped), panel titles and axis keys as they are.
 std::string map_script(const std::string& stem, const std::string& title, const GridAxes& a, const std::vector<Panel>& panels,
                        const std::string& palette) {
   const int cols = panels.size() <= 1 ? 1 : 2;
@@ -86,7 +89,7 @@ std::string map_script(const std::string& stem, const std::string& title, const 
   s << "# " << stem << ".png: " << title << ". Regenerate: gnuplot " << stem << ".gp\n"
     << terminal(cols * 620, rows * 430 + 60) << "\nset output " << gnuplot_quoted(stem + ".png") << "\n"
     << "set style fill solid 1.0 noborder\nset datafile missing 'NaN'\nset tics out\nset rmargin 14\n"
-    << "set xlabel " << gnuplot_quoted(a.x_key) << "\nset ylabel " << gnuplot_quoted(a.y_key) << "\n"
+    << "set xlabel " << gnuplot_text(a.x_key) << "\nset ylabel " << gnuplot_text(a.y_key) << "\n"
     << (a.x_log ? "set logscale x\n" : "") << (a.y_log ? "set logscale y\n" : "") << palette
     << "set multiplot layout " << rows << "," << cols << " title " << gnuplot_quoted(title) << " font ',12'\n";
   const auto ex = edges(a.x, a.x_log);
@@ -94,8 +97,7 @@ std::string map_script(const std::string& stem, const std::string& title, const 
   for (const auto& p : panels) {
     const auto [x0, x1] = std::minmax_element(ex.begin(), ex.end());
     const auto [y0, y1] = std::minmax_element(ey.begin(), ey.end());
-    // noenhanced: a law spec's '_' (decoupled:r_spin=0) is text, not a subscript.
-    s << "set title " << gnuplot_quoted(p.title) << " noenhanced\nset xrange [" << num(*x0) << ":" << num(*x1) << "]\nset yrange ["
+    s << "set title " << gnuplot_text(p.title) << "\nset xrange [" << num(*x0) << ":" << num(*x1) << "]\nset yrange ["
       << num(*y0) << ":" << num(*y1) << "]\n"
       << "plot " << gnuplot_quoted(p.data) << " using 1:2:3:4:5:6 with boxxyerror lc rgb '#bdbdbd' notitle, \\\n"
       << "     " << gnuplot_quoted(p.data) << " using 1:2:3:4:5:6:7 with boxxyerror lc palette notitle\n";
@@ -110,7 +112,7 @@ std::string discrete_palette(const std::vector<std::pair<std::string, std::strin
   s << "set palette maxcolors " << named.size() << "\nset palette defined (";
   for (std::size_t i = 0; i < named.size(); ++i) s << (i ? ", " : "") << i << " " << gnuplot_quoted(named[i].second);
   s << ")\nset cbrange [-0.5:" << named.size() - 0.5 << "]\nset cbtics (";
-  for (std::size_t i = 0; i < named.size(); ++i) s << (i ? ", " : "") << gnuplot_quoted(named[i].first) << " " << i;
+  for (std::size_t i = 0; i < named.size(); ++i) s << (i ? ", " : "") << gnuplot_text(named[i].first) << " " << i;
   s << ")\n";
   return s.str();
 }
@@ -170,7 +172,7 @@ void divergence_figure(Writer& w, const std::string& title, const std::vector<st
     const bool floor = c + 1 == curves.size();
     plot << (any ? ", \\\n     " : "plot ") << gnuplot_quoted(file) << " using 1:2 with steps lw 2 dt "
          << (floor ? 1 : static_cast<int>(c % 4) + 2) << " lc rgb "
-         << gnuplot_quoted(floor ? kColours[0] : kColours[(c + 1) % 7]) << " title " << gnuplot_quoted(name) << " noenhanced";
+         << gnuplot_quoted(floor ? kColours[0] : kColours[(c + 1) % 7]) << " title " << gnuplot_text(name);
     any = true;
   }
   if (!any) return;
@@ -179,7 +181,7 @@ void divergence_figure(Writer& w, const std::string& title, const std::vector<st
     << terminal(900, 560) << "\nset output 'divergence.png'\nset grid\nset logscale x\n"
     << "set xlabel 'time at which the two runs part: |Δγ_3| > 0.05 (s), log scale'\n"
     << "set ylabel 'share of compared runs parted'\nset yrange [0:1.02]\nset key right bottom opaque box\n"
-    << "set title " << gnuplot_quoted(title + ": divergence times against the chaos floor") << "\n"
+    << "set title " << gnuplot_text(title + ": divergence times against the chaos floor") << "\n"
     << plot.str() << "\n";
   w.figure("divergence", s.str());
 }
@@ -194,6 +196,7 @@ double lateral_mm_of(const RunRecord& r) { return 1e3 * r.puck.path_lateral; }
 void map_figures(Writer& w, const std::string& title, const std::vector<std::string>& laws,
                  const std::vector<RunRecord>& rows, const OutcomeMap& m, RunModel model) {
   const GridAxes& a = m.axes;
+  const std::string markup = gnuplot_escaped(title);  // the study's name, in the titles' markup
   const auto& classes = model == RunModel::puck ? kPuckClasses : kClasses;
   // Outcome classes.
   {
@@ -207,7 +210,7 @@ void map_figures(Writer& w, const std::string& title, const std::vector<std::str
       w.data(file, map_data(a, code));
       panels.push_back({lm.law, file});
     }
-    w.figure("map-final_class", map_script("map-final_class", title + ": where the runs end (most replicas)", a, panels,
+    w.figure("map-final_class", map_script("map-final_class", markup + ": where the runs end (most replicas)", a, panels,
                                            discrete_palette(classes)));
   }
   // Medians of two features.
@@ -226,7 +229,7 @@ void map_figures(Writer& w, const std::string& title, const std::vector<std::str
         panels.push_back({law, file});
       }
       w.figure(std::string("map-") + f.name,
-               map_script(std::string("map-") + f.name, title + ": " + f.what, a, panels, f.palette));
+               map_script(std::string("map-") + f.name, markup + ": " + f.what, a, panels, f.palette));
     }
   };
   if (model == RunModel::puck) {
@@ -277,7 +280,7 @@ void map_figures(Writer& w, const std::string& title, const std::vector<std::str
                             std::to_string(n[1]) + ", chaotic " + std::to_string(n[3]) + " of " + std::to_string(m.cells()),
                         file});
     }
-    w.figure("map-changes", map_script("map-changes", title + ": where does a law change the outcome class?", a, panels,
+    w.figure("map-changes", map_script("map-changes", markup + ": where does a law change the outcome class?", a, panels,
                                        discrete_palette(named)));
   }
 }

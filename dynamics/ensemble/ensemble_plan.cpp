@@ -13,21 +13,11 @@
 #include "dynamics/ensemble/replica.h"
 #include "dynamics/ensemble/variant.h"
 #include "friction/registry.h"
+#include "friction/support/checked_input.h"
 #include "friction/support/errors.h"
 
 namespace frictionlab::dynamics::ensemble {
 namespace {
-
-std::string read_text(const std::filesystem::path& file) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(file, ec))
-    throw support::invalid_value("scenario", file.string(), "it is a folder, not a scenario file");
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw support::invalid_value("scenario", file.string(), std::string("cannot read it: ") + std::strerror(errno));
-  std::stringstream buf;
-  buf << in.rdbuf();
-  return buf.str();
-}
 
 // The design's starts, each a value per varied key.
 std::vector<std::vector<double>> draw_starts(const Study& s) {
@@ -80,7 +70,7 @@ EnsemblePlan EnsemblePlan::make(const Study& study) {
         throw support::invalid_value("set[" + std::to_string(i) + "]", std::string_view(study.set[i]),
                                      "the contact models are the laws' @PATCH suffixes");
     }
-    const std::string text = read_text(study.scenario);
+    const std::string text = support::read_file(study.scenario, "scenario file");
     try {
       p.document_ = std::make_shared<const ScenarioDocument>(ScenarioDocument::parse(text, study.scenario.string()));
       p.model_ = run_model_from(p.document_->model(study.set));

@@ -19,6 +19,7 @@
 #include "dynamics/ensemble/outcome_map.h"
 #include "dynamics/ensemble/sample_statistics.h"
 #include "dynamics/paper/experiment_report.h"
+#include "friction/support/checked_input.h"
 #include "friction/support/checked_output.h"
 #include "friction/support/number_format.h"
 
@@ -117,7 +118,8 @@ void runs_section(std::ostringstream& s, const std::vector<std::string>& laws, c
   else
     s << "\n`rest`, `rolling`, `t_end`: the run ended as the model intends; `law-pole`: the law's denominator "
          "passed through 0 (the printed Padé law); `max-steps`: the integrator crawled (run.max_steps); "
-         "`stagnation`: a bounce reached U = Ω = 0 while unsettled; `failed`: the run could not start "
+         "`stagnation`: a bounce reached U = Ω = 0 while unsettled; `chatter`: a law discontinuous at U = 0 (or "
+         "Ω = 0) chattered there while the other did not stop; `failed`: the run could not start "
          "(docs/dynamics.md §5).\n\n";
 
   const auto classes = compare_classes(rows, laws, model);
@@ -132,7 +134,7 @@ void runs_section(std::ostringstream& s, const std::vector<std::string>& laws, c
          "puck's motion is not chaotic, the same start gives the same run.\n\n| law |";
   else
     s << "`pole+` / `pole-`: ended within 8.1° of the vertical with γ3 → +1 / −1 (the pole at z_lo / z_hi touches); "
-         "`tilted`: ended elsewhere; `stopped`: stopped early (law-pole, max-steps, stagnation, ...). Total variation "
+         "`tilted`: ended elsewhere; `stopped`: stopped early (law-pole, max-steps, stagnation, chatter, ...). Total variation "
          "(TV) and chi-square p against the reference; the floor: the same between the reference's even and odd "
          "replicas.\n\n| law |";
   for (const auto& k : names) s << " " << k << " |";
@@ -281,8 +283,7 @@ void cost_section(std::ostringstream& s, const std::vector<std::string>& laws, c
 }  // namespace
 
 std::vector<RunRecord> read_runs(const std::filesystem::path& runs_csv, std::size_t key_count, RunModel model) {
-  std::ifstream in(runs_csv, std::ios::binary);
-  if (!in) throw std::invalid_argument("cannot read '" + runs_csv.string() + "'");
+  std::istringstream in(support::read_file(runs_csv, "runs file"));
   std::string line;
   std::getline(in, line);  // header
   std::vector<RunRecord> rows;

@@ -4,6 +4,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "friction/support/checked_input.h"
 #include "friction/support/checked_output.h"
 #include "friction/support/json.h"
 
@@ -18,10 +19,11 @@ std::vector<std::string> keys_of(const Study& s) {
 
 // The hash recorded in DIR/ensemble.json, or empty if there is none.
 std::string recorded_hash(const std::filesystem::path& manifest) {
-  std::ifstream in(manifest, std::ios::binary);
-  if (!in) return "";
+  std::error_code ec;
+  if (!std::filesystem::exists(manifest, ec)) return "";
+  const std::string text = support::read_file(manifest, "ensemble manifest");
   try {
-    const auto j = support::Json::parse(in);
+    const auto j = support::Json::parse(text);
     return j.at("hash").get<std::string>();
   } catch (const std::exception& e) {
     throw std::invalid_argument(manifest.string() + " is not an ensemble manifest (" + e.what() + ")");
@@ -58,6 +60,8 @@ EnsembleSession::EnsembleSession(const EnsemblePlan& plan, SessionOptions option
   std::error_code ec;
   if (std::filesystem::exists(dir, ec) && !std::filesystem::is_directory(dir, ec))
     throw std::invalid_argument("--out " + dir.string() + " is not a folder");
+  // Before runs.csv is read: two jobs resuming one folder would both redo the runs it lacks.
+  lock_ = std::make_unique<support::FolderLock>(dir);
   bool resume = false;
   ExistingRuns existing;
   if (std::filesystem::exists(runs)) {
@@ -71,8 +75,6 @@ EnsembleSession::EnsembleSession(const EnsemblePlan& plan, SessionOptions option
     existing = read_existing_runs(runs, header, plan.runs());
     resume = true;
   }
-  std::filesystem::create_directories(dir, ec);
-  if (ec) throw support::OutputError("cannot create the output folder '" + dir.string() + "': " + ec.message());
   if (!resume) support::write_file_atomically(manifest, manifest_text(plan, options_.command));
   writer_ = std::make_unique<RunsWriter>(runs, header, resume);
   if (options_.trajectories) trajectories_ = open_trajectory_store(dir, resume);

@@ -6,7 +6,8 @@
 // DIR/ensemble.json (the manifest) names the study and its hash (dynamics/ensemble/ensemble_plan.h);
 // `--resume` continues a folder only if the hash is the same, reads runs.csv (runs_file.h) and
 // queues what is not finished. Without `--resume` an existing runs.csv is an error (nothing is
-// overwritten).
+// overwritten). The session holds DIR for its job (support::FolderLock): a second job on DIR,
+// another process or another session, is refused while this one lives.
 
 #include <atomic>
 #include <cstdio>
@@ -22,6 +23,7 @@
 #include "dynamics/ensemble/runs_file.h"
 #include "dynamics/ensemble/task_queue.h"
 #include "dynamics/ensemble/trajectory_store.h"
+#include "friction/support/folder_lock.h"
 
 namespace frictionlab::dynamics::ensemble {
 
@@ -51,7 +53,8 @@ struct SessionSummary {
 class EnsembleSession {
  public:
   /// Prepares DIR (see the header comment). std::invalid_argument for a folder that cannot be
-  /// used (another study's, runs.csv without --resume); support::OutputError if it cannot be written.
+  /// used (another study's, runs.csv without --resume, another job's: support::FolderInUse);
+  /// support::OutputError if it cannot be written.
   EnsembleSession(const EnsemblePlan& plan, SessionOptions options);
 
   [[nodiscard]] TaskQueue& queue() { return *queue_; }
@@ -77,6 +80,7 @@ class EnsembleSession {
  private:
   const EnsemblePlan& plan_;
   SessionOptions options_;
+  std::unique_ptr<support::FolderLock> lock_;  // DIR is this job's while the session lives
   std::unique_ptr<TaskQueue> queue_;
   std::unique_ptr<RunsWriter> writer_;
   std::unique_ptr<TrajectoryStore> trajectories_;

@@ -39,6 +39,14 @@ int launcher_world_size() {
   return 1;
 }
 
+int launcher_rank() {
+  for (const char* name : {"OMPI_COMM_WORLD_RANK", "PMI_RANK", "PMIX_RANK"}) {
+    const int r = environment_integer(name);
+    if (r >= 0) return r;
+  }
+  return 0;
+}
+
 #ifndef FRICTIONLAB_WITH_MPI
 
 bool mpi_available() { return false; }

@@ -26,6 +26,8 @@ namespace frictionlab::dynamics::ensemble {
 [[nodiscard]] bool launched_by_mpi();
 /// The number of ranks the launcher started, from the environment (1 if none).
 [[nodiscard]] int launcher_world_size();
+/// This process's rank, from the launcher's environment (0 if no launcher started it).
+[[nodiscard]] int launcher_rank();
 /// Whether this build has MPI.
 [[nodiscard]] bool mpi_available();
 

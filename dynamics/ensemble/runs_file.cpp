@@ -8,22 +8,12 @@
 #include <stdexcept>
 #include <vector>
 
+#include "friction/support/checked_input.h"
+
 namespace frictionlab::dynamics::ensemble {
-namespace {
-
-std::string read_all(const std::filesystem::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw std::invalid_argument("cannot read '" + file.string() + "': " + std::strerror(errno));
-  std::stringstream buf;
-  buf << in.rdbuf();
-  return buf.str();
-}
-
-}  // namespace
-
 ExistingRuns read_existing_runs(const std::filesystem::path& file, const std::string& header, long runs) {
   ExistingRuns e;
-  const std::string text = read_all(file);
+  const std::string text = support::read_file(file, "runs file");
   if (text.empty()) return e;
   if (text.compare(0, header.size(), header) != 0)
     throw std::invalid_argument(file.string() + " has another header than this study's runs.csv: it was written by "
@@ -67,7 +57,7 @@ void RunsWriter::write(const RunRecord& r) {
 void RunsWriter::close() { file_.close(); }
 
 void sort_runs_file(const std::filesystem::path& file) {
-  const std::string text = read_all(file);
+  const std::string text = support::read_file(file, "runs file");
   const std::size_t header_end = text.find('\n');
   if (header_end == std::string::npos) return;
   std::map<long, std::string_view> rows;

@@ -1,7 +1,5 @@
 #include "dynamics/ensemble/study.h"
 
-#include <toml++/toml.h>
-
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
@@ -13,6 +11,8 @@
 #include <stdexcept>
 
 #include "dynamics/ensemble/variant.h"
+#include "dynamics/toml_document.h"
+#include "friction/support/checked_input.h"
 #include "friction/support/errors.h"
 #include "friction/support/number_format.h"
 
@@ -276,14 +276,7 @@ std::vector<double> VariedAxis::grid() const {
 }
 
 Study parse_study(std::string_view text, const std::filesystem::path& source, const std::filesystem::path& folder) {
-  toml::table root;
-  try {
-    root = toml::parse(text, source.string());
-  } catch (const toml::parse_error& e) {
-    std::ostringstream m;
-    m << source.string() << ":" << e.source().begin.line << ":" << e.source().begin.column << ": " << e.description();
-    throw std::invalid_argument(m.str());
-  }
+  const toml::table root = parse_toml(text, source.string());
   try {
     Study s = build(root, source, folder);
     s.text = std::string(text);
@@ -297,15 +290,7 @@ Study parse_study(std::string_view text, const std::filesystem::path& source, co
 }
 
 Study read_study(const std::filesystem::path& file) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(file, ec))
-    throw std::invalid_argument("study file '" + file.string() + "' is a folder: give the path of a .toml file");
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw std::invalid_argument("cannot read study file '" + file.string() + "': " + std::strerror(errno));
-  std::stringstream buf;
-  buf << in.rdbuf();
-  if (in.bad()) throw std::invalid_argument("cannot read study file '" + file.string() + "': " + std::strerror(errno));
-  return parse_study(buf.str(), file, file.parent_path());
+  return parse_study(support::read_file(file, "study file"), file, file.parent_path());
 }
 
 }  // namespace frictionlab::dynamics::ensemble

@@ -9,6 +9,7 @@
 
 #include "dynamics/paper/experiment_report.h"
 #include "dynamics/paper/figure_scripts.h"
+#include "friction/support/folder_lock.h"
 #include "friction/support/gnuplot.h"
 #include "dynamics/paper/run_progress.h"
 #include "friction/support/number_format.h"
@@ -64,7 +65,9 @@ JobOutcome run_paper_job(const JobOptions& options) {
   const std::string date = now_text();
   const std::filesystem::path out = options.plan.out_dir;
   const std::filesystem::path plots = out / "plots";
-  std::filesystem::create_directories(out);
+  // The folder is this job's until the report is written: two jobs resuming one folder would both
+  // redo the runs it lacks, and write the same files.
+  const support::FolderLock lock(out);
 
   JobOutcome outcome;
   const int workers = std::min<int>(worker_count(options.jobs), static_cast<int>(specs.size()));

@@ -37,8 +37,10 @@ struct JobOutcome {
   double wall_time = 0.0;                  ///< s
 };
 
-/// Throws std::invalid_argument for bad options before anything is written; afterwards every
-/// failure of a single run is recorded in the outcome and the others go on.
+/// Throws std::invalid_argument for bad options before anything is written, and
+/// support::FolderInUse if another job holds the output folder (support/folder_lock.h: the job
+/// holds it until it returns); afterwards every failure of a single run is recorded in the
+/// outcome and the others go on.
 [[nodiscard]] JobOutcome run_paper_job(const JobOptions& options);
 
 }  // namespace frictionlab::dynamics::paper

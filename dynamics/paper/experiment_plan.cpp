@@ -5,18 +5,10 @@
 #include <stdexcept>
 #include <system_error>
 
+#include "dynamics/shipped_data.h"
 #include "friction/law_spec.h"
 #include "friction/registry.h"
 #include "friction/support/number_format.h"
-
-#ifndef FRICTIONLAB_SOURCE_DIR
-#define FRICTIONLAB_SOURCE_DIR "."
-#endif
-// The installed data relative to the installed command's folder (set by CMake from the install
-// layout: bin/frictionlab -> share/frictionlab).
-#ifndef FRICTIONLAB_DATA_DIR_FROM_BINDIR
-#define FRICTIONLAB_DATA_DIR_FROM_BINDIR "../share/frictionlab"
-#endif
 
 namespace frictionlab::dynamics::paper {
 namespace {
@@ -99,19 +91,13 @@ std::vector<std::string> split_list(std::string_view list, std::string_view what
 }
 
 std::filesystem::path default_scenario_dir() {
+  // The first shipped data folder that has the paper's scenarios; else the last (the build tree's).
   const std::string probe = known_eggs().front() + "-a.toml";
-  const std::filesystem::path local = std::filesystem::path("data") / "scenarios";
-  if (std::filesystem::exists(local / probe)) return local;
-  // An installed command must not depend on the source tree it was built from: its data is
-  // installed beside it. The running program's own path is /proc/self/exe (Linux).
+  const std::vector<std::filesystem::path> dirs = shipped_data_dirs();
   std::error_code ec;
-  const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", ec);
-  if (!ec) {
-    const std::filesystem::path installed =
-        (exe.parent_path() / FRICTIONLAB_DATA_DIR_FROM_BINDIR / "scenarios").lexically_normal();
-    if (std::filesystem::exists(installed / probe, ec)) return installed;
-  }
-  return std::filesystem::path(FRICTIONLAB_SOURCE_DIR) / "data" / "scenarios";  // the build tree
+  for (const auto& dir : dirs)
+    if (std::filesystem::exists(dir / "scenarios" / probe, ec)) return dir / "scenarios";
+  return dirs.back() / "scenarios";
 }
 
 std::vector<RunSpec> plan_runs(const PlanOptions& options) {

@@ -66,8 +66,8 @@ struct RunSpec {
 /// "a,b , c" -> {"a", "b", "c"}; an empty item is std::invalid_argument naming `what`.
 [[nodiscard]] std::vector<std::string> split_list(std::string_view list, std::string_view what);
 
-/// data/scenarios under the working directory if it has <egg>-a.toml there; else, for an installed
-/// command, the installed scenarios (<prefix>/share/frictionlab/scenarios); else the source tree's.
+/// The scenarios/ of the first shipped data folder (dynamics/shipped_data.h: data/ here, the
+/// installed data, the source tree's) that has <egg>-a.toml; else the source tree's.
 [[nodiscard]] std::filesystem::path default_scenario_dir();
 
 /// Every run, grouped by (egg, case) in the order given, laws in the order given, the baseline

@@ -15,6 +15,7 @@
 #include "dynamics/body.h"
 #include "dynamics/scenario_run.h"
 #include "friction/law_spec.h"
+#include "friction/support/checked_input.h"
 #include "friction/support/checked_output.h"
 #include "friction/support/errors.h"
 #include "friction/support/number_format.h"
@@ -81,9 +82,12 @@ void run_one(RunResult& r, const RunnerOptions& options, std::atomic<double>* pr
 
 // scenario.toml holds `scenario` as resolved: its text after the leading comment lines.
 bool same_resolved_scenario(const std::filesystem::path& file, const Scenario& scenario) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) return false;
-  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::string text;
+  try {
+    text = support::read_file(file, "scenario file");
+  } catch (const support::InputError&) {
+    return false;  // unreadable: the run is done again
+  }
   std::size_t pos = 0;
   while (pos < text.size() && text[pos] == '#') {
     const std::size_t end = text.find('\n', pos);

@@ -7,6 +7,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "friction/support/checked_input.h"
 #include "friction/support/checked_output.h"
 #include "friction/support/number_format.h"
 
@@ -80,8 +81,12 @@ std::string end_text(const RunSeries& s) {
 
 // The caps of one .dat file: the largest band top of each capped quantity.
 AxisCaps read_caps(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  if (!in) throw std::runtime_error("cannot read the plot data '" + path.string() + "'");
+  std::istringstream in;
+  try {
+    in.str(support::read_file(path, "plot data"));
+  } catch (const support::InputError& e) {
+    throw std::runtime_error(e.what());  // the job's own file: not bad input
+  }
   AxisCaps caps;
   std::vector<double> row;
   for (std::string line; std::getline(in, line);) {

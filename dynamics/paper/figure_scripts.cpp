@@ -15,7 +15,9 @@
 namespace frictionlab::dynamics::paper {
 namespace {
 
+using support::gnuplot_label_column_text;
 using support::gnuplot_quoted;
+using support::gnuplot_text;
 
 // pngcairo draws dash patterns (libgd's png draws every line solid).
 constexpr const char* kFig3Terminal =
@@ -152,13 +154,13 @@ std::string plot_command(const FigureGroup& g, const std::string& kind, const Co
                       " with filledcurves lc rgb " + colour + " notitle");
     lines.push_back(data + " using " + x + ":" + clipped(c.mean, y) + " with lines lw " +
                     (i == 0 ? "1.6" : "1.4") + " dt " + style.dash + " lc rgb " + colour +
-                    (with_titles ? " title " + gnuplot_quoted(title_of(r)) : " notitle"));
+                    (with_titles ? " title " + gnuplot_text(title_of(r)) : " notitle"));
     if (r.stopped_early) {
       const std::string end = gnuplot_quoted("data/" + r.stem + ".end.dat") + " using " + std::to_string(c.end_x) + ":" +
                               clipped(c.end_y, y);
       stops.push_back(end + " with points pt 2 ps 2.5 lw 2 lc rgb " + colour + " notitle");
       const bool left = label_side(r) == LabelSide::left;
-      stops.push_back(end + ":(" + gnuplot_quoted(r.label + ": " + r.stop) + ") with labels " +
+      stops.push_back(end + ":(" + gnuplot_label_column_text(r.label + ": " + r.stop) + ") with labels " +
                       (left ? "right offset -1.5,0.8" : "left offset 1.5,0.8") + " font ',9' tc rgb " + colour +
                       " notitle");
     }
@@ -196,7 +198,7 @@ std::string fig3(const FigureGroup& g, bool early) {
     for (const auto& r : g.runs) t_axis = std::max(t_axis, r.t_final);
   const auto label_side = [t_axis](const FigureRun& r) { return side_on_time_axis(r, t_axis); };
   s << "set multiplot layout 3,2 margins 0.07,0.98,0.05,0.88 spacing 0.08,0.07 title "
-    << gnuplot_quoted(g.egg + ", case " + g.case_id + ": " + g.description +
+    << gnuplot_text(g.egg + ", case " + g.case_id + ": " + g.description +
                       (early ? " (first " + std::to_string(static_cast<int>(kEarlyWindow)) + " s)" : ""))
     << " font ',13'\n";
   for (std::size_t p = 0; p < kPanels.size(); ++p) {
@@ -223,9 +225,9 @@ std::string fig2(const std::string& egg, const std::vector<const FigureGroup*>& 
     << "set logscale x\nset format x '10^{%T}'\nset xlabel '|ω|^2 (1/s^2), log scale; time runs right to left'\n"
     << "set ylabel 'γ_3 = cos(nutation angle)'\nset yrange [-1.05:1.05]\n"
     << "set multiplot layout 1," << groups.size() << " margins 0.05,0.98,0.12,0.74 spacing 0.05,0 title "
-    << gnuplot_quoted(egg + ": the paper's fig. 2") << " font ',13'\n";
+    << gnuplot_text(egg + ": the paper's fig. 2") << " font ',13'\n";
   for (const FigureGroup* g : groups) {
-    s << "set title " << gnuplot_quoted("case " + g->case_id + ": " + g->description) << "\n";
+    s << "set title " << gnuplot_text("case " + g->case_id + ": " + g->description) << "\n";
     s << (g == groups.front() ? kFig2Key : "unset key\n");
     s << plot_command(*g, "full",
                       {FigureColumns::omega_sq, FigureColumns::gamma3_lo, FigureColumns::gamma3_hi,

@@ -2,7 +2,7 @@
 """The nutation frequency of gamma3 in the runs of a `frictionlab paper` job, per 10-s window.
 
 Reads DIR/runs/<egg>-<case>/<law>/trajectory.csv of a job run with --full-trajectories (every
-sample: the default keeps every 10th, too coarse for this) and prints, for each run and each
+sample: the default keeps every 50th, too coarse for this) and prints, for each run and each
 window, half the rate at which gamma3 crosses its centred 1-s moving mean: the frequency of the
 nutation, the fastest motion of the axis the sample interval must resolve (docs/experiments.md §1).
 Python standard library only.

@@ -1,5 +1,6 @@
 #include "dynamics/paper/run_record.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <fstream>
@@ -9,6 +10,7 @@
 #include <string>
 
 #include "dynamics/state.h"
+#include "friction/support/checked_input.h"
 #include "friction/support/checked_output.h"
 #include "friction/support/number_format.h"
 
@@ -17,13 +19,14 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
+// A run's own files: one that cannot be read is a failure of the run's record (std::runtime_error),
+// not bad input.
 std::string read_text(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::runtime_error("cannot read '" + path.string() + "'");
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) throw std::runtime_error("reading '" + path.string() + "' failed");
-  return text.str();
+  try {
+    return support::read_file(path, "file");
+  } catch (const support::InputError& e) {
+    throw std::runtime_error(e.what());
+  }
 }
 
 const support::Json& member(const support::Json& j, const char* key) {
@@ -100,10 +103,15 @@ long thin_csv(const std::filesystem::path& path, int every) {
 }
 
 long csv_data_rows(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return -1;
-  long lines = 0;
-  for (std::string line; std::getline(in, line);) ++lines;
+  std::string text;
+  try {
+    text = support::read_file(path, "file");
+  } catch (const support::InputError&) {
+    return -1;
+  }
+  // Lines as std::getline counts them: a last line without its newline counts too.
+  long lines = static_cast<long>(std::count(text.begin(), text.end(), '\n'));
+  if (!text.empty() && text.back() != '\n') ++lines;
   return lines > 0 ? lines - 1 : 0;
 }
 

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <sstream>
 
+#include "dynamics/output_limit.h"
+#include "dynamics/puck/puck_trajectory_csv.h"
 #include "dynamics/scenario_limits.h"
 #include "dynamics/scenario_toml.h"
 #include "friction/support/errors.h"
@@ -102,6 +104,8 @@ PuckScenario build(const toml::table& root, const std::string& source, const std
   s.puck.validate();
   scenario_toml::check_law_spec("contact.law", s.law);
   s.run = scenario_toml::read_run(root, scenario_toml::RunKeys::puck);
+  check_planned_output(s.run.t_end, s.run.output_dt, s.run.max_output_bytes, puck_trajectory_header().size(),
+                       kMinPuckTrajectoryRowBytes, "trajectory.csv");
   s.resolved_toml = resolved_text(root, s.name, s.law);
   return s;
 }

@@ -13,7 +13,9 @@
 //   [initial]  v = [vx, vy] (m/s, default 0), omega (1/s, default 0), heading (rad, default 0),
 //              position = [x, y] (m, default 0)
 //   [run]      as the body's (docs/dynamics.md §7) without the keys of a compliant contact
-//              (settle_*, stop_when_rolling, max_stagnant_steps, rest_kinetic_energy)
+//              (settle_*, stop_when_rolling, max_stagnant_steps, rest_kinetic_energy) and of the
+//              chatter event (max_chatter_steps, chatter_step: the puck holds a stopped slip or
+//              spin at 0, so it cannot chatter, dynamics/puck/puck_run.h)
 
 #include <Eigen/Core>
 #include <filesystem>

@@ -19,14 +19,15 @@ PuckScenarioRun run_puck_scenario(const PuckScenario& scenario, const std::files
   PuckScenarioRun run;
   run.trajectory_csv = out_dir / "trajectory.csv";
   run.summary_json = out_dir / "summary.json";
-  PuckTrajectoryCsv csv(run.trajectory_csv, scenario.puck.a);
+  PuckTrajectoryCsv csv(run.trajectory_csv, scenario.puck.a, static_cast<std::uint64_t>(scenario.run.max_output_bytes));
   TeeObserver<PuckObserver, PuckSample> tee(csv, progress);
   RunOptions options = scenario.run;
   options.cancel = cancel;
   run.summary = simulate_puck(sys, x0, options, &tee);
   if (run.summary.reason == Termination::output_error) run.output_error = run.summary.message;
   close_trajectory(csv, run.output_error);
-  write_run_summary(run.summary_json, puck_summary_json(scenario, *law, run.summary), csv.rows(), run.output_error);
+  write_run_summary(run.summary_json, puck_summary_json(scenario, *law, run.summary),
+                    {csv.rows(), csv.bytes(), scenario.run.max_output_bytes, run.output_error});
   return run;
 }
 

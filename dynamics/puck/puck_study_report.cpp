@@ -16,6 +16,7 @@ namespace frictionlab::dynamics::puck {
 namespace {
 
 using support::gnuplot_quoted;
+using support::gnuplot_text;
 
 std::string sig(double x, int digits = 4) { return std::isfinite(x) ? support::significant(x, digits) : "–"; }
 std::string csv_number(double x) { return std::isfinite(x) ? support::shortest(x) : ""; }
@@ -65,7 +66,7 @@ std::string report(const PuckStudyResults& r, const std::string& command) {
   for (const auto& row : r.theory)
     if (std::find(kappas.begin(), kappas.end(), row.kappa) == kappas.end()) kappas.push_back(row.kappa);
   o << "## 1. The terminal ratio predicted from each law (circular patch)\n\n"
-    << "The ratio r = v/(a ω) obeys d ln r/dt = (k g/v) G(r), G(r) = r μ(r)/κ − f(r) (f = F1/(kN), "
+    << "The ratio r = v/(a ω) obeys d ln r/dt = (k g/v) G(r), G(r) = r μ(r)/κ − f(r) (f = F1/(kN), kN = k·N = k m g, "
        "μ = M/(kNa), κ = I/(m a²)); near the end it settles on a zero r* of G with G' < 0 (slip and spin stop "
        "together), or goes to 0 (the slip stops first) or ∞ (the spin stops first). Each cell: r* with the "
        "exponent λ of the approach (r − r* ∝ v^λ), or → 0, → ∞, or \"depends\" (a repelling zero: the end depends "
@@ -184,7 +185,7 @@ std::vector<std::string> write_figures(const PuckStudyResults& r, const std::fil
       const std::string name = "drift-" + std::to_string(i) + ".dat";
       support::write_file_atomically(data / name, f.str());
       plot += ", \\\n     " + gnuplot_quoted("data/" + name) + " using 1:2 with lines" + style(i) + " title " +
-              gnuplot_quoted(r.drift[i].first);
+              gnuplot_text(r.drift[i].first);
     }
     std::ostringstream s;
     s << "# The drift G(r) of the ratio r = v/(a omega) at kappa = I/(m a^2) = 1/2 (docs/puck.md §3).\n"
@@ -206,7 +207,7 @@ std::vector<std::string> write_figures(const PuckStudyResults& r, const std::fil
       const std::string name = "regimes-" + std::to_string(i) + ".dat";
       support::write_file_atomically(data / name, f.str());
       plot += std::string(i ? ", \\\n     " : "") + gnuplot_quoted("data/" + name) + " using 1:2 with linespoints pt " +
-              std::to_string(4 + i) + style(i) + " title " + gnuplot_quoted(r.laws[i]);
+              std::to_string(4 + i) + style(i) + " title " + gnuplot_text(r.laws[i]);
     }
     std::ostringstream s;
     s << "# The terminal ratio r* against the inertia ratio kappa (circular patch; gaps: no finite r*).\n"
@@ -231,7 +232,7 @@ std::vector<std::string> write_figures(const PuckStudyResults& r, const std::fil
       const std::size_t i = law_index(d.law);
       const bool titled = d.start_ratio == r.disk.front().start_ratio;
       plot += std::string(first ? "" : ", \\\n     ") + gnuplot_quoted("data/" + name) + " using 1:2 with lines" + style(i) +
-              (titled ? " title " + gnuplot_quoted(d.law) : " notitle");
+              (titled ? " title " + gnuplot_text(d.law) : " notitle");
       first = false;
     }
     if (n > 0) {
@@ -255,7 +256,7 @@ std::vector<std::string> write_figures(const PuckStudyResults& r, const std::fil
       const std::string name = "path-" + std::to_string(i) + ".dat";
       support::write_file_atomically(data / name, f.str());
       plot += std::string(i ? ", \\\n     " : "") + gnuplot_quoted("data/" + name) + " using 1:2 with lines" +
-              style(law_index(r.ellipse[i].law)) + " title " + gnuplot_quoted(r.ellipse[i].law);
+              style(law_index(r.ellipse[i].law)) + " title " + gnuplot_text(r.ellipse[i].law);
     }
     std::ostringstream s;
     s << "# The paths of the elliptic puck (puck-ellipse.toml); sideways axis magnified.\n"

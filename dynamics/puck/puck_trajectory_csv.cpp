@@ -3,10 +3,16 @@
 #include <cmath>
 #include <limits>
 
+#include "friction/support/errors.h"
 #include "friction/support/number_format.h"
 
 namespace frictionlab::dynamics::puck {
 namespace {
+
+// U/(a |Omega|), or nan where it is not defined (Omega = 0): a gap in a plot, not an infinity.
+double slip_ratio(const PuckContact& c, double a) {
+  return c.Omega != 0.0 ? c.U / (a * std::abs(c.Omega)) : std::numeric_limits<double>::quiet_NaN();
+}
 
 void put(std::string& line, double x) {
   support::append_shortest(line, x);
@@ -15,12 +21,23 @@ void put(std::string& line, double x) {
 
 }  // namespace
 
-PuckTrajectoryCsv::PuckTrajectoryCsv(const std::filesystem::path& file, double a) : file_(file), a_(a) {
+std::string puck_trajectory_header() {
   std::string header;
   for (std::size_t i = 0; i < kPuckTrajectoryColumns.size(); ++i) {
     header += kPuckTrajectoryColumns[i];
     header += i + 1 < kPuckTrajectoryColumns.size() ? ',' : '\n';
   }
+  return header;
+}
+
+PuckTrajectoryCsv::PuckTrajectoryCsv(const std::filesystem::path& file, double a, std::uint64_t max_bytes)
+    : file_(file), a_(a) {
+  const std::string header = puck_trajectory_header();
+  if (max_bytes > 0 && header.size() > max_bytes)
+    throw support::invalid_value("run.max_output_bytes", static_cast<long long>(max_bytes),
+                                 "it must hold at least the header of trajectory.csv (" +
+                                     std::to_string(header.size()) + " bytes)");
+  file_.set_size_limit(max_bytes);
   file_.append(header);
   line_.reserve(400);
 }
@@ -41,7 +58,7 @@ void PuckTrajectoryCsv::sample(const PuckSample& s) {
   put(line_, c.friction.F1);
   put(line_, c.friction.F2);
   put(line_, c.friction.M);
-  put(line_, c.Omega != 0.0 ? c.U / (a_ * std::abs(c.Omega)) : std::numeric_limits<double>::infinity());
+  put(line_, slip_ratio(c, a_));
   put(line_, s.energy);
   put(line_, slide_work(s.x));
   put(line_, spin_work(s.x));
@@ -51,6 +68,8 @@ void PuckTrajectoryCsv::sample(const PuckSample& s) {
     file_.append(line_);
   } catch (const support::OutputError& e) {
     throw OutputFailure(e.what());
+  } catch (const support::SizeLimitReached& e) {
+    throw OutputLimitReached(std::string(e.what()) + " (run.max_output_bytes: raise it, or run.output_dt)");
   }
   ++rows_;
 }

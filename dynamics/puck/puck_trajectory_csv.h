@@ -12,15 +12,18 @@
 //   psi        rad    angle from the slip direction to the major axis, [0, pi)
 //   F1, F2     N      friction force, F = -F1 e1 - F2 e2
 //   M          N m    friction torque, -M z
-//   ratio      -      U/(a |Omega|) (inf when Omega = 0)
+//   ratio      -      U/(a |Omega|); nan when Omega = 0 (no spin, or the spin held: the slip ratio
+//                     is not defined; docs/puck.md §2)
 //   energy     J      kinetic energy m v^2/2 + I omega^2/2
 //   W_slide    J      work done against sliding friction so far
 //   W_spin     J      work done against spinning friction so far
 //   held       -      0 none, 1 slip held at 0, 2 spin held, 3 both (dynamics/puck/puck_equations.h)
 //
-// Whole rows only, every write checked (support::RecordFile), as dynamics/trajectory_csv.h.
+// Whole rows only, every write checked (support::RecordFile), and the size limit
+// run.max_output_bytes, as dynamics/trajectory_csv.h.
 
 #include <array>
+#include <cstdint>
 #include <filesystem>
 #include <string>
 #include <string_view>
@@ -34,14 +37,22 @@ inline constexpr std::array<std::string_view, 18> kPuckTrajectoryColumns = {
     "t", "x", "y", "heading", "vx", "vy", "omega", "U", "Omega", "psi", "F1", "F2", "M", "ratio",
     "energy", "W_slide", "W_spin", "held"};
 
+/// The header line, "t,x,...,held\n".
+[[nodiscard]] std::string puck_trajectory_header();
+/// The smallest row: every value one character, each followed by ',' or the line's end.
+inline constexpr std::size_t kMinPuckTrajectoryRowBytes = 2 * kPuckTrajectoryColumns.size();
+
 class PuckTrajectoryCsv final : public PuckObserver {
  public:
-  /// `a`: the patch's major semi-axis (for the ratio column). Throws support::OutputError if the
-  /// file cannot be created.
-  PuckTrajectoryCsv(const std::filesystem::path& file, double a);
+  /// `a`: the patch's major semi-axis (for the ratio column); `max_bytes` (0: no limit) the most
+  /// the file may hold, the header included (a row past it throws OutputLimitReached). Throws
+  /// support::OutputError if the file cannot be created, std::invalid_argument if the header
+  /// alone passes `max_bytes`.
+  PuckTrajectoryCsv(const std::filesystem::path& file, double a, std::uint64_t max_bytes = 0);
   void sample(const PuckSample& s) override;
   void close();
   [[nodiscard]] long rows() const { return rows_; }
+  [[nodiscard]] std::uint64_t bytes() const { return file_.size(); }  ///< header and rows taken, bytes
 
  private:
   support::RecordFile file_;

@@ -23,9 +23,10 @@ namespace frictionlab::dynamics::tippe_top {
 struct TippeTopStudyOptions {
   std::filesystem::path scenario;  ///< the tippe-top scenario file
   std::vector<std::string> laws;   ///< law specs; empty: default_tippe_top_laws()
-  /// Accepted steps allowed per run (run.max_steps): a discontinuous law chatters where the slip
-  /// or the spin passes through 0, with steps of ~1e-9 s; the run then ends "max-steps" in seconds
-  /// of wall time instead of hours.
+  /// Accepted steps allowed per run (run.max_steps): a bound on what the chatter event does not
+  /// catch (a discontinuous law that chatters where the slip or the spin passes through 0, with
+  /// steps of ~1e-10 s, ends "chatter" after run.max_chatter_steps, dynamics/chatter_watch.h), so
+  /// that no run grinds for hours.
   long max_steps = 300'000;
   double output_dt = 1e-3;  ///< s: the sampling of gamma3 and of the energy and Jellett checks
   /// More "key=value" overrides of the scenario, applied after the study's own (e.g. run.t_end).

@@ -15,6 +15,7 @@ namespace frictionlab::dynamics::tippe_top {
 namespace {
 
 using support::gnuplot_quoted;
+using support::gnuplot_text;
 
 std::string sig(double x, int digits = 4) { return std::isfinite(x) ? support::significant(x, digits) : "–"; }
 std::string csv_number(double x) { return std::isfinite(x) ? support::shortest(x) : ""; }
@@ -115,8 +116,8 @@ std::vector<std::string> write_figures(const TippeTopStudyResults& r, const std:
     const std::string name = "run-" + std::to_string(i) + ".dat";
     support::write_file_atomically(data / name, f.str());
     const std::string sep = i ? ", \\\n     " : "";
-    gamma_plot += sep + gnuplot_quoted("data/" + name) + " using 1:2 with lines" + style(i) + " title " + gnuplot_quoted(run.law);
-    jellett_plot += sep + gnuplot_quoted("data/" + name) + " using 1:3 with lines" + style(i) + " title " + gnuplot_quoted(run.law);
+    gamma_plot += sep + gnuplot_quoted("data/" + name) + " using 1:2 with lines" + style(i) + " title " + gnuplot_text(run.law);
+    jellett_plot += sep + gnuplot_quoted("data/" + name) + " using 1:3 with lines" + style(i) + " title " + gnuplot_text(run.law);
   }
   std::ostringstream g;
   g << "# gamma3 against time for every law (docs/tippe-top.md).\n"

@@ -81,6 +81,10 @@ void RecordFile::fail(const std::string& what, int error_number) {
 void RecordFile::append(std::string_view record) {
   throw_if_failed();
   if (fd_ < 0) throw OutputError("'" + path_.string() + "' is already closed");
+  if (limit_ > 0 && size() + record.size() > limit_)
+    throw SizeLimitReached("'" + path_.string() + "' holds " + std::to_string(size()) + " bytes; the next record (" +
+                           std::to_string(record.size()) + " bytes) would take it past its limit of " +
+                           std::to_string(limit_) + " bytes");
   if (!buffer_.empty() && buffer_.size() + record.size() > capacity_) flush();
   buffer_.append(record);
   record_ends_.push_back(buffer_.size());

@@ -3,7 +3,8 @@
 // disk, a file-size limit, /dev/full):
 //
 //   RecordFile             a file of records (CSV rows): a failed write is rolled back to the
-//                          last whole record, so the file never ends in half a row;
+//                          last whole record, so the file never ends in half a row; an optional
+//                          size limit refuses the record that would pass it;
 //   write_file_atomically  a small file (summary.json, scenario.toml) written to a temporary
 //                          file beside it and renamed over it: it is either whole or absent;
 //   finish_standard_output flushes and closes stdout and says if that failed.
@@ -21,6 +22,13 @@ namespace frictionlab::support {
 
 /// A write, flush or close failed.
 class OutputError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// A record refused because the file would grow past its size limit (RecordFile::set_size_limit).
+/// Not a failure: the file holds every record before it and can still be closed.
+class SizeLimitReached : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
 };
@@ -44,8 +52,12 @@ class RecordFile {
   RecordFile(const RecordFile&) = delete;
   RecordFile& operator=(const RecordFile&) = delete;
 
-  /// Appends one whole record (its own line ending included). Throws OutputError.
+  /// Appends one whole record (its own line ending included). Throws OutputError, or
+  /// SizeLimitReached (the record is not taken) if size() would pass the size limit.
   void append(std::string_view record);
+  /// The file may hold at most `bytes` (0: no limit, the default); in append mode what it held
+  /// before counts too. Records already taken are kept.
+  void set_size_limit(std::uint64_t bytes) { limit_ = bytes; }
   /// Hands every buffered record to the system (a process killed later keeps them). Throws.
   void flush();
   /// Flushes and closes, checking both. Throws OutputError; later calls do nothing.
@@ -53,6 +65,9 @@ class RecordFile {
 
   /// Bytes of whole records that reached the file through this object.
   [[nodiscard]] std::uint64_t bytes_written() const { return written_; }
+  /// The file's size once every record taken is written: what it held before (append mode), the
+  /// records written and those buffered.
+  [[nodiscard]] std::uint64_t size() const { return base_ + written_ + buffer_.size(); }
   [[nodiscard]] bool failed() const { return !failure_.empty(); }
   [[nodiscard]] const std::filesystem::path& path() const { return path_; }
 
@@ -69,6 +84,7 @@ class RecordFile {
   std::size_t capacity_;
   std::uint64_t base_ = 0;     // the file's size when opened (append mode)
   std::uint64_t written_ = 0;
+  std::uint64_t limit_ = 0;    // 0: none
   std::string failure_;
 };
 

@@ -54,6 +54,18 @@ bool exited_zero(int status) { return status >= 0 && WIFEXITED(status) && WEXITS
 
 }  // namespace
 
+std::string gnuplot_escaped(std::string_view text) {
+  // Each character gnuplot's enhanced-text mode reads as markup (`help enhanced`) is preceded by a
+  // backslash, so that it is shown as itself.
+  std::string out;
+  out.reserve(text.size());
+  for (const char c : text) {
+    if (std::string_view("^_@&~{}\\").find(c) != std::string_view::npos) out.push_back('\\');
+    out.push_back(c);
+  }
+  return out;
+}
+
 std::string gnuplot_quoted(std::string_view text) {
   std::string out = "'";
   for (const char c : text) {
@@ -61,6 +73,17 @@ std::string gnuplot_quoted(std::string_view text) {
     if (c == '\'') out.push_back('\'');
   }
   return out + "'";
+}
+
+std::string gnuplot_text(std::string_view text) { return gnuplot_quoted(gnuplot_escaped(text)); }
+
+std::string gnuplot_label_column_text(std::string_view text) {
+  std::string doubled;
+  for (const char c : gnuplot_escaped(text)) {
+    doubled.push_back(c);
+    if (c == '\\') doubled.push_back(c);
+  }
+  return gnuplot_quoted(doubled);
 }
 
 bool gnuplot_has_terminal(std::string_view terminal) {

@@ -10,16 +10,25 @@ namespace {
 // Non-finite values in one spelling (printf and to_chars would write "-nan" for a negative NaN).
 const char* non_finite(double x) { return std::isnan(x) ? "nan" : x > 0 ? "inf" : "-inf"; }
 
+// The text in [first, last) without its '-' if what follows is a zero ("-0", "-0.00"): a negative
+// value that prints as zero prints as "0".
+const char* without_negative_zero_sign(const char* first, const char* last) {
+  if (first == last || *first != '-') return first;
+  for (const char* p = first + 1; p != last; ++p)
+    if (*p != '0' && *p != '.') return first;
+  return first + 1;
+}
+
 // std::to_chars with a precision prints exactly as printf's %.<precision><conversion> would, but
-// without the locale.
+// without the locale (and without a negative zero).
 void append_formatted(std::string& out, double x, std::chars_format format, int precision) {
   if (!std::isfinite(x)) {
     out += non_finite(x);
     return;
   }
   char buf[400];  // %.17f of 1e308 has 309 digits before the point
-  const auto r = std::to_chars(buf, buf + sizeof buf, x, format, precision);
-  out.append(buf, r.ptr);
+  const char* const end = std::to_chars(buf, buf + sizeof buf, x, format, precision).ptr;
+  out.append(without_negative_zero_sign(buf, end), end);
 }
 
 }  // namespace
@@ -36,7 +45,7 @@ void append_shortest(std::string& out, double x) {
     return;
   }
   char buf[32];  // the longest shortest double, "-2.2250738585072014e-308", has 24 characters
-  const auto r = std::to_chars(buf, buf + sizeof buf, x);
+  const auto r = std::to_chars(buf, buf + sizeof buf, without_negative_zero(x));
   out.append(buf, r.ptr);
 }
 

@@ -10,13 +10,14 @@ SI units everywhere (m, s, kg, N, rad). The functions run the same compiled code
 * :func:`accuracy` compares laws with the exact one on a grid (:class:`AccuracyResult`).
 * :func:`ensemble` runs a study file of many runs (:class:`EnsembleResult`).
 * :func:`register_law` adds a law written in Python, usable by name everywhere a law is.
+* :class:`OutputError` (an OSError): a file or folder of the results could not be written.
 
 docs/python.md is the guide; docs/model.md states the conventions (the directions e1, e2, the
 sign of the spin).
 """
 
 from ._version import __version__
-from ._core import Law, law_specs, laws
+from ._core import Law, OutputError, law_specs, laws
 from ._simulate import Interrupted, SimulationResult, simulate
 from ._accuracy import AccuracyResult, accuracy
 from ._ensemble import EnsembleInterrupted, EnsembleResult, ensemble
@@ -27,6 +28,7 @@ __all__ = [
     "Law",
     "laws",
     "law_specs",
+    "OutputError",
     "simulate",
     "SimulationResult",
     "Interrupted",

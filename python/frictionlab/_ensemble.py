@@ -127,12 +127,15 @@ def ensemble(study, out, *, threads=0, resume=False, figures=True, progress=None
     Raises
     ------
     ValueError
-        A bad study (file, key, value, law) or folder, or threads < 0, with the command line's
+        A bad study (key, value, law) or folder, or threads < 0, with the command line's
         one-line message (naming the key and the rule); nothing is run or written.
+    FileNotFoundError, PermissionError, IsADirectoryError
+        The study file cannot be read (OSErrors, with the command line's message).
     EnsembleInterrupted
         Ctrl-C during the job (a KeyboardInterrupt): ``.result`` holds what ran.
-    OSError
-        The folder or a file could not be written (the runs recorded before stay in runs.csv).
+    OutputError
+        The folder or a file could not be written (an OSError; the runs recorded before stay in
+        runs.csv).
 
     Runs that stop early (a law's pole, max-steps) or fail are results, in runs.csv with their
     reason, not errors. The GIL is released while the job runs, except for the moments it looks at
@@ -142,7 +145,7 @@ def ensemble(study, out, *, threads=0, resume=False, figures=True, progress=None
     summary, report, pending = _core._run_ensemble(os.fspath(study), out, int(threads), bool(resume), bool(figures),
                                                    progress, _PROGRESS_INTERVAL)
     if summary["output_error"]:
-        raise OSError(f"frictionlab ensemble: the output failed: {summary['output_error']}")
+        raise _core.OutputError(f"frictionlab ensemble: the output failed: {summary['output_error']}")
     runs_csv = os.path.join(out, "runs.csv")
     runs = read_runs(runs_csv) if os.path.exists(runs_csv) else {}
     result = EnsembleResult(runs, summary, out, report or None)

@@ -5,7 +5,7 @@ import os
 import tempfile
 
 from . import _core
-from ._toml import to_toml, toml_value
+from ._toml import check_nesting, nesting, to_toml, toml_value
 
 __all__ = ["simulate", "SimulationResult", "Interrupted"]
 
@@ -77,6 +77,8 @@ def _override_list(overrides):
     if overrides is None:
         return []
     if isinstance(overrides, dict):
+        for k, v in overrides.items():  # the key's parts and the value nest (--set checks the same)
+            check_nesting(str(k).count(".") + 1 + nesting(v), f"override {k}")
         return [f"{k}={toml_value(v, k)}" for k, v in overrides.items()]
     if isinstance(overrides, str):
         return [overrides]
@@ -116,15 +118,19 @@ def simulate(scenario, law=None, overrides=None, *, out=None, progress=None):
     Raises
     ------
     ValueError
-        A bad scenario, key, value or law, with the command line's message (naming the key and
-        the rule); nothing is run.
+        A bad scenario, key, value or law, with the command line's message (naming the key, for
+        a dict the dict's key, and the rule); nothing is run.
+    TypeError
+        A dict holding something a scenario cannot (None, a complex number, ...), naming its key.
+    FileNotFoundError, PermissionError, IsADirectoryError
+        The scenario file cannot be read (OSErrors, with the command line's message).
     Interrupted
         Ctrl-C during the run (a KeyboardInterrupt): ``.result`` holds what ran.
-    OSError
-        The output folder or a file could not be written.
+    OutputError
+        The output folder or a file could not be written (an OSError).
 
-    A run that stops early for a physical or numerical reason (a pole of the law, a failed
-    integrator, max-steps) is not an error: its summary says why (``result.reason``). The GIL is
+    A run that stops early for a physical or numerical reason (a pole of the law, the chatter of
+    a discontinuous law, a failed integrator, max-steps) is not an error: its summary says why (``result.reason``). The GIL is
     released while the run integrates, except for the moments it looks at signals and progress.
     """
     overrides = _override_list(overrides)

@@ -9,12 +9,25 @@ text that round-trips), integers as integers. Only what a scenario holds is acce
 import math
 import numbers
 
-__all__ = ["to_toml", "toml_value"]
+__all__ = ["to_toml", "toml_value", "nesting", "check_nesting"]
+
+# TOML integers are 64-bit signed: a larger Python int would fail in the parser, which could
+# only name a line of the generated text; it is refused here, naming the key.
+_INT_MIN, _INT_MAX = -2**63, 2**63 - 1
+
+
+def _check_text(s, what):
+    """Text that UTF-8 cannot hold (a lone surrogate) would fail on its way to the parser."""
+    try:
+        s.encode("utf-8")
+    except UnicodeEncodeError:
+        raise ValueError(f"{what} is invalid: it is not Unicode text (it holds a lone surrogate)") from None
 
 
 def _key(k):
     if not isinstance(k, str):
         raise TypeError(f"scenario key {k!r} is invalid: keys must be strings")
+    _check_text(k, f"scenario key {k!r}")
     if k and all(c.isalnum() and c.isascii() or c in "_-" for c in k):
         return k
     return _string(k)
@@ -40,8 +53,12 @@ def toml_value(v, where="value"):
     if isinstance(v, bool):
         return "true" if v else "false"
     if isinstance(v, str):
+        _check_text(v, f"scenario {where} = {v!r}")
         return _string(v)
     if isinstance(v, numbers.Integral):
+        if not _INT_MIN <= int(v) <= _INT_MAX:
+            raise ValueError(f"scenario {where} = {int(v)} is invalid: an integer must be within [-2^63, 2^63 - 1] "
+                             "(TOML's 64 bits); write a larger number as a float")
         return str(int(v))
     if isinstance(v, numbers.Real):
         x = float(v)
@@ -54,9 +71,36 @@ def toml_value(v, where="value"):
         items = v.tolist() if hasattr(v, "tolist") else v
         if not isinstance(items, list):
             return toml_value(items, where)
-        return "[" + ", ".join(toml_value(x, where) for x in items) + "]"
+        return "[" + ", ".join(toml_value(x, f"{where}[{i}]") for i, x in enumerate(items)) + "]"
     raise TypeError(f"scenario {where} = {v!r} is invalid: a scenario holds tables (dicts), strings, "
                     f"booleans, numbers and lists of them")
+
+
+def nesting(value):
+    """How many levels a value nests as TOML (dynamics/toml_nesting.h): each dict key and each
+    list item one level below its container ({"run": {"t_end": 1}} is 2). Without recursion, so
+    that any depth is measured."""
+    deepest = 0
+    todo = [(value, 0)]
+    while todo:
+        v, depth = todo.pop()
+        if isinstance(v, dict):
+            items = v.values()
+        elif isinstance(v, (list, tuple)):
+            items = v
+        else:
+            continue
+        for item in items:
+            deepest = max(deepest, depth + 1)
+            todo.append((item, depth + 1))
+    return deepest
+
+
+def check_nesting(depth, where):
+    """ValueError, as for a TOML file, if `depth` levels are too many to read back."""
+    from . import _core  # the rule lives in the C++ reader
+
+    _core._check_toml_nesting(depth, where)
 
 
 def _table(d, path, lines):
@@ -76,6 +120,7 @@ def to_toml(scenario):
     """TOML text of a scenario dict such as ``{"body": {...}, "contact": {...}, "run": {...}}``."""
     if not isinstance(scenario, dict):
         raise TypeError(f"a scenario must be a dict or a path, not {type(scenario).__name__}")
+    check_nesting(nesting(scenario), "the scenario dict")  # before _table recurses into it
     lines = []
     _table(scenario, [], lines)
     return "\n".join(lines) + "\n"

@@ -15,18 +15,46 @@ std::string shape_text(const std::vector<py::ssize_t>& shape) {
   return text + ")";
 }
 
+std::string input_is_invalid(std::size_t i, py::handle input, const std::string& rule) {
+  return std::string("friction input ") + kInputNames[i] + " = " + std::string(py::repr(input)) + " is invalid: " + rule;
+}
+
+// What NumPy's cast to float64 would take silently though it is not a real number: a complex
+// value (its imaginary part dropped) and None (NaN).
+void check_real(std::size_t i, py::handle input) {
+  if (input.is_none()) throw py::type_error(input_is_invalid(i, input, "it must be a number or an array of numbers"));
+  const py::array a = py::array::ensure(input);
+  if (!a) {
+    PyErr_Clear();
+    return;  // not an array of anything: the cast says so
+  }
+  const char kind = a.dtype().kind();
+  if (kind == 'c') throw py::type_error(input_is_invalid(i, input, "it must be real, not complex"));
+  if (kind == 'O') {
+    std::size_t flat = 0;
+    for (const py::handle item : a.attr("flat")) {
+      if (item.is_none()) {
+        throw py::type_error(std::string("friction input ") + kInputNames[i] + " is invalid: its element " +
+                             element_name(flat, std::vector<py::ssize_t>(a.shape(), a.shape() + a.ndim())) +
+                             " is None, not a number");
+      }
+      ++flat;
+    }
+  }
+}
+
 }  // namespace
 
 BroadcastInputs broadcast_inputs(const std::array<py::handle, 7>& inputs) {
   BroadcastInputs in;
   std::size_t ndim = 0;
   for (std::size_t i = 0; i < inputs.size(); ++i) {
+    check_real(i, inputs[i]);
     // forcecast: ints, bools and float32 become float64; float64 arrays of any strides are views.
     in.arrays[i] = py::array_t<double, py::array::forcecast>::ensure(inputs[i]);
     if (!in.arrays[i]) {
       PyErr_Clear();
-      throw py::type_error(std::string("friction input ") + kInputNames[i] + " = " +
-                           std::string(py::repr(inputs[i])) + " is invalid: it must be a number or an array of numbers");
+      throw py::type_error(input_is_invalid(i, inputs[i], "it must be a number or an array of numbers"));
     }
     ndim = std::max(ndim, static_cast<std::size_t>(in.arrays[i].ndim()));
   }
@@ -92,6 +120,8 @@ std::optional<ElementError> evaluate_all(const friction::FrictionLaw& law, const
         F2[flat] = f.F2;
         M[flat] = f.M;
       } catch (const std::invalid_argument& e) {
+        return ElementError{flat, e.what(), true};
+      } catch (const std::domain_error& e) {  // input outside where the law can be computed
         return ElementError{flat, e.what(), true};
       } catch (const std::exception& e) {
         return ElementError{flat, e.what(), false};

@@ -31,7 +31,8 @@ struct BroadcastInputs {
   std::size_t size = 1;
 };
 
-/// Converts and broadcasts like NumPy. TypeError for input that is not numbers, ValueError
+/// Converts and broadcasts like NumPy. TypeError for input that is not real numbers (complex
+/// values and None too, which NumPy's cast would turn into their real part and NaN), ValueError
 /// ("operands could not be broadcast together with shapes ...") for shapes that do not broadcast.
 /// Needs the GIL.
 [[nodiscard]] BroadcastInputs broadcast_inputs(const std::array<py::handle, 7>& inputs);
@@ -41,7 +42,7 @@ struct BroadcastInputs {
 struct ElementError {
   std::size_t index = 0;
   std::string message;
-  bool invalid_input = true;  ///< std::invalid_argument (ValueError); else another error (RuntimeError)
+  bool invalid_input = true;  ///< std::invalid_argument or std::domain_error (ValueError); else RuntimeError
 };
 
 /// Evaluates `law` at every element, into C-contiguous F1, F2, M of in.size elements; stops at the

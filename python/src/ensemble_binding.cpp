@@ -17,6 +17,7 @@
 #include <thread>
 
 #include "bindings.h"
+#include "file_errors.h"
 #include "dynamics/ensemble/ensemble_job.h"
 
 namespace frictionlab::python {
@@ -81,7 +82,8 @@ py::tuple run(const std::string& study, const std::string& out, int threads, boo
     }
     worker.join();
   }
-  if (error) std::rethrow_exception(error);  // std::invalid_argument: ValueError, nothing ran
+  // std::invalid_argument: ValueError, nothing ran; an OSError if the study file cannot be read.
+  if (error) reading_file(study, [&] { std::rethrow_exception(error); });
   // A Ctrl-C that came after the last look still counts.
   if (!pending && PyErr_CheckSignals() != 0) pending.emplace(py::error_already_set());
 

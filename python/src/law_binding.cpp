@@ -9,6 +9,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "arguments.h"
 #include "bindings.h"
 #include "broadcast.h"
 #include "friction/registry.h"
@@ -60,11 +61,13 @@ bool call_scalar(const Law& law, const std::array<py::handle, 7>& inputs, py::tu
   return true;
 }
 
-py::tuple call(const Law& law, py::handle U, py::handle Omega, py::handle a, py::handle b, py::handle psi,
-               py::handle N, py::handle k) {
+// law(U, Omega, a, b, psi, N, k), bound by hand (arguments.h) so that a missing or misspelled
+// argument is named as Python names it.
+py::tuple call(const Law& law, const py::args& args, const py::kwargs& kwargs) {
+  const std::array<py::handle, 7> inputs = bind_arguments("Law.__call__", kInputNames, args, kwargs);
   py::tuple scalar_result;
-  if (call_scalar(law, {U, Omega, a, b, psi, N, k}, scalar_result)) return scalar_result;
-  const BroadcastInputs in = broadcast_inputs({U, Omega, a, b, psi, N, k});
+  if (call_scalar(law, inputs, scalar_result)) return scalar_result;
+  const BroadcastInputs in = broadcast_inputs(inputs);
   py::array_t<double> F1(in.shape), F2(in.shape), M(in.shape);
   double* f1 = F1.mutable_data();
   double* f2 = F2.mutable_data();
@@ -117,6 +120,15 @@ py::dict info_dict(const friction::LawInfo& info) {
   return d;
 }
 
+// Law(spec), bound by hand like __call__.
+Law make_law(const py::args& args, const py::kwargs& kwargs) {
+  const auto [spec] = bind_arguments("Law.__init__", std::array<const char*, 1>{"spec"}, args, kwargs);
+  if (!py::isinstance<py::str>(spec)) {
+    throw py::type_error("Law() argument 'spec' must be str, not " + std::string(py::str(spec.get_type().attr("__name__"))));
+  }
+  return Law(spec.cast<std::string>());
+}
+
 }  // namespace
 
 void bind_laws(py::module_& m) {
@@ -147,6 +159,10 @@ register_law() come last.)doc");
 Every registered law by name, each followed by its variants: the specs that set one choice
 parameter to a value other than its default (e.g. ``"exact:pressure=uniform"``).)doc");
 
+  // The docstrings of Law and its methods begin with their signatures; pybind11's own would say
+  // "*args, **kwargs" (they are bound by hand).
+  py::options options;
+  options.disable_function_signatures();
   py::class_<Law>(m, "Law", R"doc(Law(spec)
 
 A law of coupled dry friction (sliding + spinning) over an elliptic Hertz contact patch.
@@ -182,15 +198,15 @@ several Python threads may evaluate laws at once.
 An element outside the law's domain raises ValueError naming the element and the rule, e.g.
 ``element [3]: friction input U = -1 is invalid: the slip speed must be >= 0 m/s ...``; no
 result is returned then.)doc")
-      .def(py::init<const std::string&>(), py::arg("spec"))
-      .def("__call__", &call, py::arg("U"), py::arg("Omega"), py::arg("a"), py::arg("b"), py::arg("psi"),
-           py::arg("N"), py::arg("k"),
+      .def(py::init(&make_law))
+      .def("__call__", &call,
            R"doc(__call__(U, Omega, a, b, psi, N, k) -> (F1, F2, M)
 
 Evaluates the law. Inputs in SI units (U m/s, Omega 1/s, a and b m, psi rad, N in newtons, k
 dimensionless), numbers or arrays broadcast together; returns F1 and F2 in newtons and M in
 newton metres, arrays of the broadcast shape (floats for scalar input). ValueError names the
-first element the law rejects and the rule it breaks.)doc")
+first element the law rejects and the rule it breaks; TypeError names an input that is not real
+numbers (complex numbers, None, words) and an argument missing or unknown, as Python does.)doc")
       .def_property_readonly("spec", &Law::spec, "The spec the law was made from, verbatim (str).")
       .def_property_readonly("name", &Law::name, "The registered name of the law (str).")
       .def_property_readonly(

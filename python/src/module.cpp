@@ -10,7 +10,11 @@ PYBIND11_MODULE(_core, m) {
   namespace py = pybind11;
   m.doc() = "frictionlab's compiled core; use the package frictionlab (docs/python.md).";
   // A file that cannot be written is an OSError in Python, as a failed open() would be.
-  py::register_exception<frictionlab::support::OutputError>(m, "OutputError", PyExc_OSError);
+  // Exported as frictionlab.OutputError (python/frictionlab/__init__.py), and named so.
+  auto output_error = py::register_exception<frictionlab::support::OutputError>(m, "OutputError", PyExc_OSError);
+  output_error.attr("__module__") = "frictionlab";
+  output_error.doc() = "A file or folder of the results could not be written (an OSError); the message names it "
+                       "and the system's reason, as the command line's one line does.";
   frictionlab::python::bind_laws(m);
   frictionlab::python::bind_simulate(m);
   frictionlab::python::bind_accuracy(m);

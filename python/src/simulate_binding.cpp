@@ -14,8 +14,10 @@
 #include <vector>
 
 #include "bindings.h"
+#include "file_errors.h"
 #include "dynamics/scenario.h"
 #include "dynamics/scenario_run.h"
+#include "dynamics/toml_nesting.h"
 #include "dynamics/trajectory_csv.h"
 
 namespace frictionlab::python {
@@ -90,7 +92,8 @@ py::tuple run(const std::optional<std::string>& path, const std::string& text, c
               const std::vector<std::string>& overrides, const std::string& out_dir, py::object progress,
               double interval) {
   const dynamics::ScenarioDocument doc =
-      path ? dynamics::ScenarioDocument::read(*path) : dynamics::ScenarioDocument::parse(text, source);
+      path ? reading_file(*path, [&] { return dynamics::ScenarioDocument::read(*path); })
+           : dynamics::ScenarioDocument::parse(text, source);
   const dynamics::Scenario scenario = doc.resolve(overrides);
   std::atomic<bool> cancel{false};
   Collector collector(std::move(progress), scenario.run.t_end, interval, cancel);
@@ -126,6 +129,13 @@ Internal: frictionlab.simulate() calls it. Reads the scenario file `path` (or pa
 in_contact bool) and the exception that stopped the run (KeyboardInterrupt, or one raised by
 `progress(t, t_end)`), or None. `interval` (s of wall time) is how often signals are checked
 and progress is called.)doc");
+  m.def(
+      "_check_toml_nesting", [](int depth, const std::string& where) { dynamics::check_toml_nesting(depth, where); },
+      py::arg("depth"), py::arg("where"),
+      R"doc(_check_toml_nesting(depth, where)
+
+Internal: raises ValueError (the message of a TOML file nested as deeply) if `depth` levels are
+more than a scenario may nest (dynamics/toml_nesting.h). to_toml() asks before it writes a dict.)doc");
 }
 
 }  // namespace frictionlab::python

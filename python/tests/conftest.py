@@ -37,13 +37,15 @@ def run_cli(cli, *args, check=True):
     return done
 
 
-def read_csv_columns(path):
+def read_csv_columns(path, text_columns=("law",)):
     """A CSV file as {column: float64 array}, every number read by Python's float() (exact for
-    the command line's shortest / 17-digit output)."""
+    the command line's shortest / 17-digit output); the columns named in text_columns (the law
+    of `frictionlab friction`) as lists of strings."""
     with open(path, newline="") as f:
         rows = list(csv.reader(f))
     header, body = rows[0], rows[1:]
-    return {name: np.array([float(r[i]) for r in body]) for i, name in enumerate(header)}
+    return {name: [r[i] for r in body] if name in text_columns else np.array([float(r[i]) for r in body])
+            for i, name in enumerate(header)}
 
 
 def bits(x):

@@ -100,7 +100,7 @@ def test_bad_study_raises_the_command_lines_message_naming_the_key(cli, tmp_path
     assert "contact.kk" in str(e.value)
     assert str(e.value) == message
     assert not (tmp_path / "py").exists(), "nothing may be written on bad input"
-    with pytest.raises(ValueError, match="missing.toml"):
+    with pytest.raises(FileNotFoundError, match="missing.toml"):
         frictionlab.ensemble(tmp_path / "missing.toml", tmp_path / "py")
     with pytest.raises(ValueError, match="--threads"):
         frictionlab.ensemble(bad, tmp_path / "py", threads=-1)

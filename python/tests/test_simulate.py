@@ -108,7 +108,9 @@ def test_progress_is_called_and_can_stop_the_run(scenarios):
         seen.append((t, t_end))
         return len(seen) < 3
 
-    result = frictionlab.simulate(path, progress=progress)
+    # Sampled every 1e-3 s (as the file did until 2026-11-28): the run lasts long enough (~1 s of
+    # wall time) for three calls 0.05 s apart.
+    result = frictionlab.simulate(path, overrides={"run.output_dt": 1e-3}, progress=progress)
     assert len(seen) == 3
     assert all(t_end == 1000.0 for _, t_end in seen)
     assert [t for t, _ in seen] == sorted(t for t, _ in seen)
@@ -130,12 +132,14 @@ def test_an_exception_in_progress_stops_the_run_and_is_raised(scenarios):
 
 
 def test_ctrl_c_stops_the_run_and_keeps_what_ran(scenarios, tmp_path):
-    # egg-printed-a runs ~120 s of simulated time (seconds of wall time); SIGINT comes at 0.3 s.
+    # egg-printed-a runs ~120 s of simulated time (about a second of wall time when sampled every
+    # 1e-3 s, as the file did until 2026-11-28); SIGINT comes at 0.3 s.
     timer = threading.Timer(0.3, os.kill, (os.getpid(), signal.SIGINT))
     timer.start()
     try:
         with pytest.raises(frictionlab.Interrupted) as e:
-            frictionlab.simulate(os.path.join(scenarios, "egg-printed-a.toml"), out=tmp_path)
+            frictionlab.simulate(os.path.join(scenarios, "egg-printed-a.toml"), overrides={"run.output_dt": 1e-3},
+                                 out=tmp_path)
     finally:
         timer.cancel()
     result = e.value.result
@@ -146,3 +150,31 @@ def test_ctrl_c_stops_the_run_and_keeps_what_ran(scenarios, tmp_path):
     with open(tmp_path / "summary.json") as f:
         assert json.load(f)["termination"]["reason"] == "interrupted"
     assert_same_trajectory(result, read_csv_columns(tmp_path / "trajectory.csv"))
+
+
+DEEP = 40000  # toml++ recursed out of the stack at this depth and the interpreter died
+
+
+def test_deeply_nested_input_raises_value_error_not_a_crash(scenarios, tmp_path):
+    rule = "nested more than 64 levels deep"
+    dotted = ".".join(["a"] * DEEP)
+    for name, text in [("table", f"[{dotted}]\nx = 1\n"), ("dotted", f"{dotted} = 1\n"),
+                       ("arrays", "x = " + "[" * DEEP + "]" * DEEP + "\n")]:
+        path = tmp_path / f"{name}.toml"
+        path.write_text(text)
+        with pytest.raises(ValueError, match=rule):
+            frictionlab.simulate(path)
+    # A dict nested as deeply is refused before it is written as TOML (whose writer recurses).
+    deep = {"x": 1}
+    for _ in range(DEEP):
+        deep = {"a": deep}
+    with pytest.raises(ValueError, match="the scenario dict: " + rule):
+        frictionlab.simulate(deep)
+    nested_list = 1
+    for _ in range(DEEP):
+        nested_list = [nested_list]
+    path = os.path.join(scenarios, "sphere-sliding.toml")
+    with pytest.raises(ValueError, match="override run.x: " + rule):
+        frictionlab.simulate(path, overrides={"run.x": nested_list})
+    with pytest.raises(ValueError, match=rule):
+        frictionlab.simulate(path, overrides=[dotted + "=1"])

@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <regex>
 #include <string>
 
 #include "tests/cli/cli_runner.h"
@@ -27,7 +28,7 @@ std::filesystem::path temp_out(const char* tag) {
 TEST(AccuracyCommand, TinyStudyWritesTheFiles) {
   const auto out = temp_out("ok");
   const auto r = run_frictionlab("accuracy --out " + out.string() +
-                                 " --laws pade-printed --s-points 5 --mu-points 2 --psi-points 3 --no-plots");
+                                 " --laws pade-printed --s-points 5 --mu-points 2 --psi-points 3 --no-plots --points");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(r.out, "");  // progress goes to stderr
   EXPECT_NE(r.err.find("accuracy: pade-printed"), std::string::npos) << r.err;
@@ -39,6 +40,61 @@ TEST(AccuracyCommand, TinyStudyWritesTheFiles) {
   std::filesystem::remove_all(out);
 }
 
+std::uintmax_t folder_bytes(const std::filesystem::path& dir) {
+  std::uintmax_t bytes = 0;
+  for (const auto& entry : std::filesystem::recursive_directory_iterator(dir))
+    if (entry.is_regular_file()) bytes += entry.file_size();
+  return bytes;
+}
+
+// The default study (200 000 points, six laws) writes what a laptop user accepts: the summaries,
+// tables and figure data, no per-point tables (165 MB; --points asks for them). The figures are
+// left out (--no-plots: gnuplot may be missing; they add ~1 MB, docs/accuracy.md).
+TEST(AccuracyCommand, TheDefaultStudyWritesUnder20MBAndNoPerPointTables) {
+  const auto out = temp_out("default");
+  const auto r = run_frictionlab("accuracy --out " + out.string() + " --no-plots");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(out / "points")) << "per-point tables written unasked";
+  EXPECT_TRUE(std::filesystem::exists(out / "summary.csv"));
+  EXPECT_LT(folder_bytes(out), 20'000'000u);
+  const std::string readme = slurp(out / "README.md");
+  EXPECT_NE(readme.find("not written by this run: add `--points`"), std::string::npos) << readme;
+  std::filesystem::remove_all(out);
+}
+
+TEST(AccuracyCommand, ProgressLinesGiveTheUnitsOfTheErrors) {
+  // The errors are dimensionless multiples of k·N (F1, F2) and k·N·a (M): "F1 0.2" alone reads as
+  // 0.2 N, and kN as kilonewtons.
+  const auto out = temp_out("units");
+  const auto r = run_frictionlab("accuracy --out " + out.string() +
+                                 " --laws pade-printed --s-points 5 --mu-points 2 --psi-points 3 --no-plots");
+  std::filesystem::remove_all(out);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string number = "[-+0-9.e]+|inf|nan";
+  const std::regex line("(^|\n)accuracy: pade-printed: (" + number + ") s; max \\|error\\| F1 (" + number +
+                        ") k·N, F2 (" + number + ") k·N, M (" + number + ") k·N·a\n");
+  EXPECT_TRUE(std::regex_search(r.err, line)) << r.err;
+}
+
+TEST(AccuracyCommand, FigureTextShowsLawSpecsAsTheyAre) {
+  // A law spec's '_' is markup to gnuplot's enhanced text: every title and key entry escapes it.
+  const auto out = temp_out("figure_text");
+  const auto r = run_frictionlab("accuracy --out " + out.string() +
+                                 " --laws decoupled:r_spin=0.001 --s-points 5 --mu-points 2 --psi-points 3 --no-plots");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  int scripts = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(out / "plots")) {
+    if (entry.path().extension() != ".gp") continue;
+    ++scripts;
+    std::ifstream in(entry.path());
+    const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    EXPECT_NE(text.find("decoupled:r\\_spin=0.001"), std::string::npos) << entry.path() << "\n" << text;
+    EXPECT_EQ(text.find("decoupled:r_spin"), std::string::npos) << entry.path() << "\n" << text;
+  }
+  EXPECT_GE(scripts, 2);
+  std::filesystem::remove_all(out);
+}
+
 void expect_one_line_error(const std::string& args, const std::string& fragment);
 
 TEST(AccuracyCommand, SpecsForTheLawsAndTheReferenceAreEchoedVerbatim) {
@@ -46,7 +102,7 @@ TEST(AccuracyCommand, SpecsForTheLawsAndTheReferenceAreEchoedVerbatim) {
   const auto out = temp_out("spec");
   const auto r = run_frictionlab("accuracy --out " + out.string() +
                                  " --reference exact:pressure=uniform --laws 'exact:pressure=punch;pade-printed'"
-                                 " --s-points 5 --mu-points 2 --psi-points 3 --no-plots");
+                                 " --s-points 5 --mu-points 2 --psi-points 3 --no-plots --points");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.err.find("against 'exact:pressure=uniform'"), std::string::npos) << r.err;
   for (const char* f : {"points/exact_pressure-uniform.csv", "points/exact_pressure-punch.csv",

@@ -6,6 +6,8 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <string>
 
 #include "tests/cli/cli_runner.h"
@@ -29,6 +31,21 @@ TEST(CalibrateCommand, TinyStudyWritesTheFiles) {
     EXPECT_TRUE(std::filesystem::exists(out / f)) << f;
   }
   std::filesystem::remove_all(out);
+}
+
+TEST(CalibrateCommand, LegendsShowLawSpecsAsTheyAre) {
+  // The forces figure names each engine law by its spec, decoupled:r_spin=...: escaped for
+  // gnuplot's enhanced text, where '_' would make "spin=..." a subscript (support::gnuplot_text).
+  const auto out = temp_out("legend");
+  const auto r = run_frictionlab("calibrate --out " + out.string() +
+                                 " --laws decoupled --s-points 5 --mu-points 2 --psi-points 3 --no-plots");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  std::ifstream in(out / "plots" / "calibration_forces.gp");
+  const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  std::filesystem::remove_all(out);
+  EXPECT_NE(text.find("title 'decoupled:r\\_spin="), std::string::npos) << text;
+  EXPECT_EQ(text.find("r_spin"), std::string::npos) << text;
+  EXPECT_EQ(text.find("noenhanced"), std::string::npos) << text;
 }
 
 TEST(CalibrateCommand, BadOptionsGiveOneLineAndNonZeroExit) {

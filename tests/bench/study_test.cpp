@@ -154,7 +154,9 @@ TEST(Study, FilesHaveOneRowPerPointAndPerLaw) {
                    ("frictionlab_accuracy_files_" + std::to_string(::getpid()));
   RunInfo run = describe_this_run();
   run.command = "frictionlab accuracy --out test";
-  write_study_files(study, dir, run);
+  StudyFiles files;
+  files.point_tables = true;
+  write_study_files(study, dir, run, nullptr, files);
   EXPECT_EQ(count_lines(dir / "points" / "exact.csv"), study.grid.size() + 1);
   EXPECT_EQ(count_lines(dir / "points" / "pade-printed.csv"), study.grid.size() + 1);
   EXPECT_EQ(count_lines(dir / "summary.csv"), 1u + 2u);

@@ -38,11 +38,13 @@ inline std::filesystem::path fresh_temp_dir(const std::string& tag) {
   return dir;
 }
 
-/// Runs `FRICTIONLAB_EXE args` (args are shell words, may include `< file`).
-inline CommandResult run_frictionlab(const std::string& args) {
+/// Runs `FRICTIONLAB_EXE args` (args are shell words, may include `< file`), in the folder
+/// `cwd` if one is given (else in the test's own).
+inline CommandResult run_frictionlab(const std::string& args, const std::filesystem::path& cwd = {}) {
   const auto dir = std::filesystem::temp_directory_path();
   const auto err = dir / ("frictionlab_test_err_" + std::to_string(::getpid()));
-  const std::string cmd = std::string(FRICTIONLAB_EXE) + " " + args + " 2>" + err.string();
+  const std::string cd = cwd.empty() ? std::string() : "cd '" + cwd.string() + "' && ";
+  const std::string cmd = cd + std::string(FRICTIONLAB_EXE) + " " + args + " 2>" + err.string();
   CommandResult r;
   FILE* pipe = ::popen(cmd.c_str(), "r");
   if (!pipe) return r;
@@ -88,9 +90,10 @@ inline CommandResult wait_for(pid_t pid, const std::filesystem::path& out, const
   return r;
 }
 
+// Not run_frictionlab's file: a test may run a command while a spawned one runs.
 inline std::filesystem::path capture_file(const char* what) {
   return std::filesystem::temp_directory_path() /
-         ("frictionlab_test_" + std::string(what) + "_" + std::to_string(::getpid()));
+         ("frictionlab_test_spawned_" + std::string(what) + "_" + std::to_string(::getpid()));
 }
 
 }  // namespace detail

@@ -10,6 +10,7 @@
 #include <fstream>
 #include <memory>
 #include <numbers>
+#include <regex>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -45,6 +46,22 @@ TEST(LawsCommand, ListsEveryLawOnOneLineAndEachParameterBelowIt) {
   EXPECT_EQ(count_lines(r.out), 1 + laws.size() + with_aliases + parameters);
 }
 
+TEST(LawsCommand, DefinesKnBeforeItsFirstUse) {
+  // The summaries write forces per kN: the first line that writes kN (as a word, or kNa) says
+  // what it is, k·N (friction coefficient times normal force), not kilonewtons.
+  const auto r = run_frictionlab("laws");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  std::istringstream lines(r.out);
+  const std::regex kn("(^|[^A-Za-z0-9_])kNa?([^A-Za-z0-9_]|$)");
+  for (std::string line; std::getline(lines, line);) {
+    if (!std::regex_search(line, kn)) continue;
+    EXPECT_NE(line.find("kN = k·N"), std::string::npos) << "the first kN is not defined: " << line;
+    EXPECT_NE(line.find("kNa = k·N·a"), std::string::npos) << line;
+    return;
+  }
+  ADD_FAILURE() << "no law summary writes kN any more: " << r.out;
+}
+
 TEST(LawsCommand, ListsEachLawOnceWithItsOtherNames) {
   // The old names of the engines' laws at their defaults are aliases: not lines of their own, but
   // named on the line below their law.
@@ -68,20 +85,61 @@ TEST(FrictionCommand, AnAliasIsEchoedAndGivesItsTargetsForces) {
   const auto target = run_frictionlab("friction --law pade-printed,decoupled" + contact);
   ASSERT_EQ(alias.exit_code, 0) << alias.err;
   ASSERT_EQ(target.exit_code, 0) << target.err;
-  const auto second_line = [](const std::string& s) { return s.substr(s.find('\n') + 1); };
-  const std::string a = second_line(alias.out);
-  const std::string t = second_line(target.out);
+  // The header, pade-printed's row, then the row of the alias or of its target.
+  const auto third_line = [](const std::string& s) { return s.substr(s.find('\n', s.find('\n') + 1) + 1); };
+  const std::string a = third_line(alias.out);
+  const std::string t = third_line(target.out);
   ASSERT_EQ(a.rfind("coulomb-decoupled,", 0), 0u) << alias.out;
   ASSERT_EQ(t.rfind("decoupled,", 0), 0u) << target.out;
   EXPECT_EQ(a.substr(a.find(',')), t.substr(t.find(',')));
 }
 
-TEST(FrictionCommand, SingleContactPrintsOneCsvLine) {
-  // Pure sliding under any law: F1 = kN = 0.3 * 10, no spin moment.
+TEST(FrictionCommand, SingleContactPrintsAHeaderAndARowPerLaw) {
+  // Pure sliding under any law: F1 = k·N = 0.3 * 10, no spin moment.
   const auto r = run_frictionlab(
       "friction --law pade-printed --U 0.5 --Omega 0 --a 0.01 --b 0.005 --psi 0.2 --N 10 --k 0.3");
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_EQ(r.out, "3,0,0\n");  // 0.3 * 10 rounds to exactly 3 in double arithmetic
+  EXPECT_EQ(r.out, "law,F1,F2,M\npade-printed,3,0,0\n");  // 0.3 * 10 rounds to exactly 3 in double arithmetic
+}
+
+TEST(FrictionCommand, OneLawAndSeveralGiveTheSameColumns) {
+  // A reader of the output need not know how many laws were asked for: the same header, and each
+  // row names its law, for one contact and for a table.
+  const std::string contact = " --U 0.1 --Omega 10 --a 0.01 --b 0.004 --psi 0.3 --N 20 --k 0.1";
+  const auto one = run_frictionlab("friction --law exact" + contact);
+  const auto two = run_frictionlab("friction --law exact,pade-printed" + contact);
+  ASSERT_EQ(one.exit_code, 0) << one.err;
+  ASSERT_EQ(two.exit_code, 0) << two.err;
+  const auto lines = [](const std::string& s) {
+    std::vector<std::string> v;
+    std::istringstream in(s);
+    for (std::string l; std::getline(in, l);) v.push_back(l);
+    return v;
+  };
+  const auto a = lines(one.out), b = lines(two.out);
+  ASSERT_EQ(a.size(), 2u) << one.out;
+  ASSERT_EQ(b.size(), 3u) << two.out;
+  EXPECT_EQ(a[0], "law,F1,F2,M");
+  EXPECT_EQ(b[0], a[0]);
+  EXPECT_EQ(b[1], a[1]) << "the first law's row does not depend on the others";
+
+  const std::string csv = "U,Omega,a,b,psi,N,k\n0.1,10,0.01,0.004,0.3,20,0.1\n";
+  const auto dir = fresh_temp_dir("friction_columns");
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / "in.csv") << csv;
+  const auto table_one = run_frictionlab("friction --law exact " + (dir / "in.csv").string());
+  const auto table_two = run_frictionlab("friction --law exact,pade-printed " + (dir / "in.csv").string());
+  std::filesystem::remove_all(dir);
+  ASSERT_EQ(table_one.exit_code, 0) << table_one.err;
+  ASSERT_EQ(table_two.exit_code, 0) << table_two.err;
+  const auto ta = lines(table_one.out), tb = lines(table_two.out);
+  ASSERT_EQ(ta.size(), 2u) << table_one.out;
+  ASSERT_EQ(tb.size(), 3u) << table_two.out;
+  EXPECT_EQ(ta[0], "U,Omega,a,b,psi,N,k,law,F1,F2,M");
+  EXPECT_EQ(tb[0], ta[0]);
+  EXPECT_EQ(tb[1], ta[1]);
+  // The table's row is the input row then the single contact's row.
+  EXPECT_EQ(ta[1], "0.1,10,0.01,0.004,0.3,20,0.1," + a[1]);
 }
 
 TEST(FrictionCommand, BatchRoundTripMatchesTheLibrary) {
@@ -159,6 +217,22 @@ std::string library_output(const std::vector<std::string>& names, const std::str
   return out.str();
 }
 
+TEST(FrictionCommand, WritesNoNegativeZero) {
+  // Pure spin: the exact law's F1 is -0.0 (arithmetic residue; the exact F1 is 0). A table shows
+  // "0", not "-0", for one contact and in a batch.
+  const friction::ContactInput spin{0.0, 100.0, 0.004, 0.002, 0.0, 19.62, 0.1};
+  const auto f = friction::make_law("exact")->evaluate(spin);
+  ASSERT_TRUE(f.F1 == 0.0 && std::signbit(f.F1)) << "the case no longer makes a -0: pick another";
+  const auto r = run_frictionlab("friction --law exact --U 0 --Omega 100 --a 0.004 --b 0.002 --psi 0 --N 19.62 --k 0.1");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.out.rfind("law,F1,F2,M\nexact,0,0,", 0), 0u) << r.out;
+  const TempCsv file("friction_zero", "U,Omega,a,b,psi,N,k\n0,100,0.004,0.002,0,19.62,0.1\n");
+  const auto table = run_frictionlab("friction --law exact " + file.path.string());
+  ASSERT_EQ(table.exit_code, 0) << table.err;
+  EXPECT_NE(table.out.find("\n0,100,0.004,0.002,0,19.62,0.1,exact,0,0,"), std::string::npos) << table.out;
+  EXPECT_EQ(table.out.find(",-0"), std::string::npos) << table.out;
+}
+
 TEST(FrictionCommand, ReadsATableFromAFileGivenByPathOrByInput) {
   const TempCsv file("friction_path", kTable);
   const auto positional = run_frictionlab("friction --law pade-printed " + file.path.string());
@@ -172,17 +246,17 @@ TEST(FrictionCommand, ReadsATableFromAFileGivenByPathOrByInput) {
   EXPECT_EQ(dash.out, positional.out);
 }
 
-TEST(FrictionCommand, SeveralLawsAddALawColumn) {
+TEST(FrictionCommand, SeveralLawsGiveARowPerLaw) {
   const TempCsv file("friction_laws", kTable);
   const auto r = run_frictionlab("friction --law exact,pade-printed " + file.path.string());
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(r.out, library_output({"exact", "pade-printed"}, kTable));
   EXPECT_EQ(r.out.substr(0, r.out.find('\n')), "case,U,Omega,a,b,psi,N,k,law,F1,F2,M");
-  // One contact, two laws: one line per law, the law first.
+  // One contact, two laws: the header, then one line per law, the law first.
   const auto single = run_frictionlab(
       "friction --law pade-printed,coulomb-decoupled --U 0.5 --Omega 0 --a 0.01 --b 0.005 --psi 0.2 --N 10 --k 0.3");
   ASSERT_EQ(single.exit_code, 0) << single.err;
-  EXPECT_EQ(single.out, "pade-printed,3,0,0\ncoulomb-decoupled,3,0,0\n");
+  EXPECT_EQ(single.out, "law,F1,F2,M\npade-printed,3,0,0\ncoulomb-decoupled,3,0,0\n");
   const auto twice = run_frictionlab("friction --law exact,exact " + file.path.string());
   EXPECT_EQ(twice.exit_code, 1);
   EXPECT_NE(twice.err.find("law 'exact' is listed twice"), std::string::npos) << twice.err;
@@ -200,10 +274,11 @@ TEST(FrictionCommand, LawSpecsWorkAndAreEchoedVerbatim) {
   const auto plain = run_frictionlab("friction --law exact" + contact);
   const auto spec = run_frictionlab("friction --law exact:pressure=hertz" + contact);
   ASSERT_EQ(spec.exit_code, 0) << spec.err;
-  EXPECT_EQ(spec.out, plain.out);
+  const std::string forces = plain.out.substr(plain.out.find("\nexact,") + 7);
+  EXPECT_EQ(spec.out, "law,F1,F2,M\nexact:pressure=hertz," + forces);
   const auto both = run_frictionlab("friction --law 'pade-printed;exact:pressure=hertz'" + contact);
   ASSERT_EQ(both.exit_code, 0) << both.err;
-  EXPECT_EQ(both.out.substr(both.out.find('\n') + 1), "exact:pressure=hertz," + plain.out);
+  EXPECT_EQ(both.out.substr(both.out.rfind('\n', both.out.size() - 2) + 1), "exact:pressure=hertz," + forces);
   // The same law twice under two spellings, and a bad value: one line each.
   const auto twice = run_frictionlab("friction --law exact,exact:pressure=hertz" + contact);
   EXPECT_EQ(twice.exit_code, 1);
@@ -236,7 +311,7 @@ TEST(FrictionCommand, OnErrorSkipAndNanKeepGoingAndWarnOnStderr) {
   const TempCsv file("friction_onerror", csv);
   const auto skip = run_frictionlab("friction --on-error skip " + file.path.string());
   EXPECT_EQ(skip.exit_code, 0) << skip.err;
-  EXPECT_EQ(skip.out, "U,Omega,a,b,psi,N,k,F1,F2,M\n1,0,1,1,0,1,0.5,0.5,0,0\n");
+  EXPECT_EQ(skip.out, "U,Omega,a,b,psi,N,k,law,F1,F2,M\n1,0,1,1,0,1,0.5,exact,0.5,0,0\n");
   EXPECT_EQ(count_lines(skip.err), 2u) << skip.err;
   EXPECT_NE(skip.err.find("frictionlab: warning: input line 3: column Omega = 'x' is not a number (row skipped)"),
             std::string::npos)
@@ -245,8 +320,8 @@ TEST(FrictionCommand, OnErrorSkipAndNanKeepGoingAndWarnOnStderr) {
       << skip.err;
   const auto nan = run_frictionlab("friction --on-error nan " + file.path.string());
   EXPECT_EQ(nan.exit_code, 0) << nan.err;
-  EXPECT_EQ(nan.out, "U,Omega,a,b,psi,N,k,F1,F2,M\n1,0,1,1,0,1,0.5,0.5,0,0\n1,x,1,1,0,1,0.5,nan,nan,nan\n"
-                     "1e999,0,1,1,0,1,0.5,nan,nan,nan\n");
+  EXPECT_EQ(nan.out, "U,Omega,a,b,psi,N,k,law,F1,F2,M\n1,0,1,1,0,1,0.5,exact,0.5,0,0\n1,x,1,1,0,1,0.5,exact,nan,nan,nan\n"
+                     "1e999,0,1,1,0,1,0.5,exact,nan,nan,nan\n");
   const auto stop = run_frictionlab("friction " + file.path.string());
   EXPECT_EQ(stop.exit_code, 1);
   EXPECT_EQ(stop.out, "");
@@ -283,6 +358,10 @@ TEST(FrictionCommand, InputProblemsAreOneLine) {
       {"friction " + dir.string(), dir.string() + " is a directory"},
       {"friction --U 1 " + file.path.string(), "give either one contact (--U ... --k) or an input table, not both"},
       {"friction --input " + file.path.string() + " " + file.path.string(), "the input is given twice"},
+      // A read that fails (EIO) is neither an empty table nor the end of one: it names the file and why.
+      {"friction /proc/self/mem", "frictionlab: error: reading the input '/proc/self/mem' failed: Input/output error"},
+      // Standard input too (a folder as stdin: read(2) fails with EISDIR), where std::cin said "empty".
+      {"friction - </", "frictionlab: error: reading standard input failed: Is a directory"},
   };
   for (const auto& c : cases) {
     const auto r = run_frictionlab(c.args);

@@ -31,6 +31,16 @@ TEST(CliMain, HelpStillPrintsHelpAndExitsZero) {
   }
 }
 
+// Every command that writes files says in its --help how much it writes (docs/dynamics.md §6 has
+// the measured sizes), so that nobody learns it from a full disk.
+TEST(CliMain, EveryCommandThatWritesFilesStatesItsSizeInItsHelp) {
+  for (const std::string command : {"simulate", "accuracy", "calibrate", "paper", "tippe-top", "puck-study", "ensemble"}) {
+    const auto r = run_frictionlab(command + " --help");
+    EXPECT_EQ(r.exit_code, 0) << command << ": " << r.err;
+    EXPECT_NE(r.out.find(" MB"), std::string::npos) << command << " --help states no size:\n" << r.out;
+  }
+}
+
 // Every command-line error, CLI11's own included, is one line `frictionlab: error: ...` and exit 1.
 struct CliError {
   std::string args;
@@ -85,6 +95,48 @@ TEST(CliMain, ABadOverrideIsBlamedOnTheOverride) {
   EXPECT_EQ(law.exit_code, 1);
   EXPECT_EQ(law.err.rfind("frictionlab: error: --law fast: ", 0), 0u) << law.err;
   EXPECT_FALSE(std::filesystem::exists(never));
+}
+
+// Values CLI11 alone clamped (an integer beyond 64 bits became 9223372036854775807: tippe-top
+// then ran for ever), read as 0 (1e-400) or ignored (an empty --law ran the scenario's own law)
+// are one error line naming the option, the value and the rule, for every command
+// (dynamics/cli/option_values.h).
+TEST(CliMain, OutOfRangeNumbersAndEmptyValuesAreErrorsNotClampsOrDefaults) {
+  const std::string never = fresh_temp_dir("cli_never_values").string();
+  const std::string scenario = std::string(FRICTIONLAB_SOURCE_DIR) + "/data/scenarios/sphere-spinning.toml";
+  const std::string huge = "99999999999999999999999";
+  const std::vector<CliError> cases = {
+      {"tippe-top --out " + never + " --max-steps " + huge,
+       "--max-steps = '" + huge + "' is invalid: it must be an integer from -9223372036854775808"},
+      {"accuracy --out " + never + " --threads " + huge, "--threads = '" + huge + "' is invalid"},
+      {"calibrate --out " + never + " --threads " + huge, "--threads = '" + huge + "' is invalid"},
+      {"accuracy --out " + never + " --s-points 0x10", "--s-points = '0x10' is invalid: it must be an integer in decimal"},
+      {"ensemble " + never + ".toml --out " + never + " --threads 3000000000",
+       "--threads = 3000000000 is invalid: it must be from -2147483648 to 2147483647"},
+      {"paper --out " + never + " --jobs 3000000000", "--jobs = 3000000000 is invalid"},
+      {"friction --U 1 --Omega 0 --a 1 --b 1 --psi 0 --N 1 --k 1e-400", "--k = '1e-400' is invalid: it underflows"},
+      {"friction --U 1e400 --Omega 0 --a 1 --b 1 --psi 0 --N 1 --k 1", "--U = '1e400' is invalid: it overflows"},
+      {"simulate " + scenario + " --law '' --out " + never, "--law = '' is invalid: it is empty"},
+      {"simulate " + scenario + " --out ''", "--out = '' is invalid: it is empty"},
+      {"tippe-top --out " + never + " --laws ''", "--laws = '' is invalid: it is empty"},
+      {"friction ''", "INPUT = '' is invalid: it is empty"},
+  };
+  for (const auto& c : cases) {
+    const auto r = run_frictionlab(c.args + " </dev/null");
+    EXPECT_EQ(r.exit_code, 1) << c.args << ": " << r.err;
+    EXPECT_EQ(r.err.rfind("frictionlab: error: ", 0), 0u) << c.args << ": " << r.err;
+    EXPECT_EQ(count_lines(r.err), 1) << c.args << ": " << r.err;
+    EXPECT_NE(r.err.find(c.expected), std::string::npos) << c.args << ": " << r.err;
+    EXPECT_TRUE(r.out.empty()) << c.args << ": " << r.out;
+  }
+  EXPECT_FALSE(std::filesystem::exists(never));
+}
+
+TEST(CliMain, VersionPrintsTheProjectVersion) {
+  const auto r = run_frictionlab("--version");
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.out, "frictionlab " FRICTIONLAB_PROJECT_VERSION "\n");  // CMake's project(VERSION)
+  EXPECT_TRUE(r.err.empty()) << r.err;
 }
 
 }  // namespace

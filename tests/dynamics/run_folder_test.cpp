@@ -55,12 +55,14 @@ TEST(DynRunFolder, StartRefusesAFolderUnderAFileNamingIt) {
 TEST(DynRunFolder, SummaryGetsTheOutputRecordErrorNullWhenNone) {
   const auto dir = fresh_dir("summary");
   std::filesystem::create_directories(dir);
-  write_run_summary(dir / "a.json", support::Json{{"reason", "t_end"}}, 12, "");
+  write_run_summary(dir / "a.json", support::Json{{"reason", "t_end"}}, {12, 5400, 100000000, ""});
   const auto a = support::Json::parse(slurp(dir / "a.json"));
   EXPECT_EQ(a["reason"], "t_end");
   EXPECT_EQ(a["output"]["trajectory_rows"], 12);
+  EXPECT_EQ(a["output"]["trajectory_bytes"], 5400);
+  EXPECT_EQ(a["output"]["max_output_bytes"], 100000000);
   EXPECT_TRUE(a["output"]["error"].is_null());
-  write_run_summary(dir / "b.json", support::Json::object(), 3, "disk full");
+  write_run_summary(dir / "b.json", support::Json::object(), {3, 0, 1, "disk full"});
   EXPECT_EQ(support::Json::parse(slurp(dir / "b.json"))["output"]["error"], "disk full");
   std::filesystem::remove_all(dir);
 }

@@ -167,6 +167,24 @@ TEST(DynScenario, EachBadScenarioGivesOneClearError) {
   expect_errors(cases);
 }
 
+// The chatter event's keys (dynamics/chatter_watch.h): read like the other [run] thresholds, an
+// unset run.chatter_step left to its scaled default, bad values named.
+TEST(DynScenario, ReadsTheChatterKeys) {
+  const Scenario unset = parse_scenario(kGood, "test.toml");
+  EXPECT_EQ(unset.run.chatter.max_steps, kDefaultMaxChatterSteps);
+  EXPECT_FALSE(unset.run.chatter.step.has_value());
+  const Scenario set = parse_scenario(kGood, "test.toml", {"run.max_chatter_steps=200", "run.chatter_step=3e-8"});
+  EXPECT_EQ(set.run.chatter.max_steps, 200);
+  EXPECT_EQ(set.run.chatter.step, 3e-8);
+  EXPECT_EQ(parse_scenario(kGood, "test.toml", {"run.max_chatter_steps=0"}).run.chatter.max_steps, 0);
+  expect_errors({
+      {"negative chatter budget", kGood, {"run.max_chatter_steps=-1"},
+       "run.max_chatter_steps = -1 is invalid: it must be >= 0 (0: never)"},
+      {"chatter budget not an integer", kGood, {"run.max_chatter_steps=1.5"}, "run.max_chatter_steps must be an integer"},
+      {"zero chatter step", kGood, {"run.chatter_step=0"}, "run.chatter_step = 0 is invalid: it must be finite and > 0 s"},
+  });
+}
+
 // Values outside the physically meaningful ranges (docs/dynamics.md §7) are rejected when the
 // scenario is read, naming the key, instead of failing far away ("friction input U = inf").
 // One case per rule; kGood is a 5 cm, 1 kg sphere.
@@ -266,6 +284,29 @@ TEST(DynScenario, TheLawMayBeASpecKeptVerbatim) {
   const std::string e = error_of(kGood, {"contact.law=exact:pressure=flat"});
   EXPECT_EQ(e.rfind("--set contact.law=exact:pressure=flat: contact.law = 'exact:pressure=flat' is invalid", 0), 0u) << e;
   EXPECT_NE(e.find("pressure must be one of hertz"), std::string::npos) << e;
+}
+
+// The size of trajectory.csv is limited in bytes (run.max_output_bytes, dynamics/output_limit.h):
+// a default stated in docs/dynamics.md, overridable, positive.
+TEST(DynScenario, TheTrajectoryByteLimitHasItsStatedDefaultAndIsOverridable) {
+  EXPECT_EQ(parse_scenario(kGood, "test.toml").run.max_output_bytes, 100'000'000);  // docs/dynamics.md §4: 100 MB
+  EXPECT_EQ(parse_scenario(kGood, "test.toml", {"run.max_output_bytes=500000"}).run.max_output_bytes, 500'000);
+  const std::string e = error_of(kGood, {"run.max_output_bytes=0"});
+  EXPECT_EQ(e.rfind("--set run.max_output_bytes=0: run.max_output_bytes = 0 is invalid", 0), 0u) << e;
+}
+
+// A plan that would write more than the limit even at one character per value is refused before
+// anything runs, naming the key, the file and the limit: 3 s at 3.3e-7 s is 9.1e6 rows of at
+// least 2 bytes per column (50 bytes), 450 MB > 100 MB.
+TEST(DynScenario, AnOutputIntervalWhosePlanPassesTheByteLimitIsRefused) {
+  const std::string e = error_of(kGood, {"run.t_end=3", "run.output_dt=3.3e-7"});
+  EXPECT_EQ(e.rfind("--set run.output_dt=3.3e-7: run.output_dt = 3.3e-07 is invalid", 0), 0u) << e;
+  for (const char* word : {"trajectory.csv", "run.max_output_bytes = 100000000", "50 bytes"})
+    EXPECT_NE(e.find(word), std::string::npos) << word << " in " << e;
+  // The same plan with the limit raised on purpose is accepted; a plan at the limit is too.
+  EXPECT_NO_THROW((void)parse_scenario(kGood, "test.toml", {"run.t_end=3", "run.output_dt=3.3e-7",
+                                                            "run.max_output_bytes=1000000000"}));
+  EXPECT_NO_THROW((void)parse_scenario(kGood, "test.toml", {"run.t_end=1", "run.output_dt=1e-6"}));  // 50 MB
 }
 
 TEST(DynScenario, ShippedScenariosAreValid) {

@@ -5,6 +5,7 @@
 #include <csignal>
 #include <algorithm>
 #include <filesystem>
+#include <fstream>
 #include <sstream>
 #include <string>
 
@@ -88,6 +89,75 @@ TEST(DynSimulateCommand, BadInputGivesOneLineAndNonZeroExit) {
   EXPECT_FALSE(std::filesystem::exists(dir / "summary.json"));
 }
 
+// A file whose read fails (reading /proc/self/mem at offset 0 is EIO) was taken for an empty
+// scenario ("section [body] is required"): the error names the file and the system's reason.
+TEST(DynSimulateCommand, AFailedReadIsReportedAsSuchNotAsAnEmptyFile) {
+  const auto dir = fresh_dir("eio");
+  const auto r = run_frictionlab("simulate /proc/self/mem --out " + dir.string());
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(r.err, "frictionlab: error: reading scenario file '/proc/self/mem' failed: Input/output error\n");
+  EXPECT_FALSE(std::filesystem::exists(dir));
+}
+
+// A table nested 40000 deep crashed the command (toml++ recursed out of the stack, SIGSEGV); it
+// is one error line naming the rule (dynamics/toml_nesting.h), for a file and for a --set.
+TEST(DynSimulateCommand, ADeeplyNestedScenarioIsOneErrorLineNotACrash) {
+  const auto dir = fresh_dir("deep");
+  std::filesystem::create_directories(dir);
+  std::string dotted = "a";
+  for (int i = 1; i < 40000; ++i) dotted += ".a";
+  { std::ofstream(dir / "deep.toml") << "[" << dotted << "]\nx = 1\n"; }
+  const auto r = run_frictionlab("simulate " + (dir / "deep.toml").string() + " --out " + (dir / "out").string());
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_EQ(r.err.rfind("frictionlab: error: " + (dir / "deep.toml").string() + ":1: nested more than 64 levels deep", 0),
+            0u)
+      << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  const auto set = run_frictionlab("simulate " + kScenarios + "sphere-spinning.toml --set " + dotted +
+                                   "=1 --out " + (dir / "out").string());
+  EXPECT_EQ(set.exit_code, 1) << set.err;
+  EXPECT_NE(set.err.find("nested more than 64 levels deep"), std::string::npos) << set.err.substr(0, 200);
+  EXPECT_FALSE(std::filesystem::exists(dir / "out"));
+  std::filesystem::remove_all(dir);
+}
+
+// The installed command finds the shipped scenarios by name from any folder (here the build's:
+// the source tree's data/), with or without .toml; an existing path of that name wins.
+TEST(DynSimulateCommand, AShippedScenarioIsFoundByNameFromAnyFolder) {
+  const auto dir = fresh_dir("by_name");
+  std::filesystem::create_directories(dir);
+  for (const std::string name : {"sphere-sliding", "sphere-sliding.toml"}) {
+    const auto r = run_frictionlab("simulate " + name + " --set run.t_end=0.01 --out out", dir);
+    ASSERT_EQ(r.exit_code, 0) << name << ": " << r.err;
+    const auto json = nlohmann::json::parse(slurp(dir / "out" / "summary.json"));
+    EXPECT_EQ(json["scenario"]["name"], "sphere-sliding");
+    EXPECT_EQ(std::filesystem::weakly_canonical(json["scenario"]["source"].get<std::string>()),
+              std::filesystem::weakly_canonical(kScenarios + "sphere-sliding.toml"));
+  }
+  // A file of that name in the working folder is what the user means.
+  std::filesystem::copy_file(kScenarios + "sphere-spinning.toml", dir / "sphere-sliding.toml");
+  const auto own = run_frictionlab("simulate sphere-sliding.toml --set run.t_end=0.01 --out own", dir);
+  ASSERT_EQ(own.exit_code, 0) << own.err;
+  EXPECT_EQ(nlohmann::json::parse(slurp(dir / "own" / "summary.json"))["scenario"]["name"], "sphere-spinning");
+  std::filesystem::remove_all(dir);
+}
+
+TEST(DynSimulateCommand, AnUnknownNameSaysWhereItLooked) {
+  const auto dir = fresh_dir("unknown_name");
+  std::filesystem::create_directories(dir);
+  const auto r = run_frictionlab("simulate no-such-scenario --out out", dir);
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(r.err.rfind("frictionlab: error: scenario 'no-such-scenario' not found: no file 'no-such-scenario' here, "
+                        "and no no-such-scenario or no-such-scenario.toml in data/scenarios, ",
+                        0),
+            0u)
+      << r.err;
+  EXPECT_NE(r.err.find(kScenarios.substr(0, kScenarios.size() - 1)), std::string::npos) << "the source tree's: " << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "out"));
+  std::filesystem::remove_all(dir);
+}
+
 // Whole rows only: every line of the CSV ends in a newline and has every column.
 void expect_whole_rows(const std::string& csv) {
   ASSERT_FALSE(csv.empty());
@@ -128,6 +198,46 @@ TEST(DynSimulateCommand, AFileSizeLimitStopsTheRunWithOneErrorAndValidFiles) {
   ASSERT_FALSE(summary.is_discarded());
   EXPECT_EQ(summary["termination"]["reason"], "output-error");
   EXPECT_FALSE(has_temporary_files(dir));
+  std::filesystem::remove_all(dir);
+}
+
+// run.max_output_bytes, enforced by the writer on the bytes it writes: the plan (1001 rows of at
+// least 50 bytes) fits 100 kB, the rows (~450 bytes each) do not. The run stops with reason
+// output-limit (exit 3, one line), its file whole and within one row of the limit, never past it.
+TEST(DynSimulateCommand, AnOutputPastRunMaxOutputBytesStopsTheRunAtTheLimit) {
+  const auto dir = fresh_dir("max_output_bytes");
+  constexpr std::uintmax_t kLimit = 100000;
+  constexpr std::uintmax_t kLongestRow = 25 * 25;  // 25 values of at most 24 characters, and separators
+  const auto r = run_frictionlab("simulate " + kScenarios + "sphere-spinning.toml --set run.t_end=1 "
+                                 "--set run.output_dt=1e-3 --set run.max_output_bytes=100000 --out " + dir.string());
+  EXPECT_EQ(r.exit_code, 3) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_NE(r.err.find("stopped early (output-limit)"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("run.max_output_bytes"), std::string::npos) << r.err;
+  const std::string csv = slurp(dir / "trajectory.csv");
+  EXPECT_LE(csv.size(), kLimit);
+  EXPECT_GT(csv.size() + kLongestRow, kLimit);
+  expect_whole_rows(csv);
+  const auto summary = nlohmann::json::parse(slurp(dir / "summary.json"));
+  EXPECT_EQ(summary["termination"]["reason"], "output-limit");
+  EXPECT_EQ(summary["output"]["trajectory_bytes"], csv.size());
+  EXPECT_EQ(summary["output"]["max_output_bytes"], kLimit);
+  EXPECT_LT(summary["final_time"].get<double>(), 1.0);
+  std::filesystem::remove_all(dir);
+}
+
+// A shipped scenario run as it is writes what a laptop user accepts (README, docs/dynamics.md §6:
+// at most 20 MB per run). egg-homogeneous-c is the largest (the longest run, to rest at 454 s):
+// 213 MB at its old output_dt of 1e-3 s, 10.6 MB at 0.02 s. ~3 s of integration in Release.
+TEST(DynSimulateCommand, TheLargestShippedScenarioWritesUnder20MB) {
+  const auto dir = fresh_dir("largest");
+  const auto r = run_frictionlab("simulate " + kScenarios + "egg-homogeneous-c.toml --out " + dir.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  std::uintmax_t bytes = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(dir)) bytes += entry.file_size();
+  EXPECT_LT(bytes, 20'000'000u);
+  const auto summary = nlohmann::json::parse(slurp(dir / "summary.json"));
+  EXPECT_EQ(summary["termination"]["reason"], "rest");  // it ran to its end: the size is the whole run's
   std::filesystem::remove_all(dir);
 }
 

@@ -109,8 +109,10 @@ RunSummary slide(const friction::FrictionLaw& law, const SlidingSphere& p, doubl
 TEST(DynSimulation, SlidingSphereStartsRollingAtFiveSeventhsOfItsSpeed) {
   const SlidingSphere p;
   const double t_roll = 2.0 * p.v0 / (7.0 * p.k * p.g);
-  // Any law whose pure-slip force is kN (docs/model.md; the printed Pade law too: Omega = 0).
-  for (const char* name : {"exact", "pade-printed"}) {
+  // Any law whose pure-slip force is kN (docs/model.md; the printed Pade law too: Omega = 0). The
+  // decoupled law is discontinuous at U = 0, but with no spin the contact enters the stagnation
+  // region there, and the run ends rolling, not chatter (dynamics/chatter_watch.h).
+  for (const char* name : {"exact", "pade-printed", "decoupled:r_spin=0"}) {
     const auto law = friction::make_law(name);
     const double eps_static = PlaneContact{p.k, p.lambda, p.g}.static_height(p.m * p.g);
     const RunSummary s = slide(*law, p, eps_static);
@@ -358,6 +360,88 @@ TEST(DynSimulation, ASphereThatStopsSlippingDuringABounceDoesNotEndRolling) {
   // and says so.
   EXPECT_EQ(reason(s), "stagnation") << s.message;
   EXPECT_GT(std::abs(c.u.dot(c.gamma)), 5.0 * v_lift) << "the stop is mid-impact";
+}
+
+// A sphere launched sliding at v0 while spinning about the vertical at Omega0 (data/scenarios/
+// sphere-slide-spin.toml). Under `decoupled:r_spin=0` the force is kN against the slip and there is
+// no spin moment; the spin about the vertical moves no contact point of a sphere (omega x r = 0 for
+// r = -R gamma), so the slip falls at (7/2) k g and reaches 0 at t_s = 2 v0/(7 k g) while Omega
+// stays Omega0 (the friction's moment r x F is horizontal). There the force keeps its full size
+// whatever the slip: the contact chatters about U = 0 with steps of ~1e-10 s, and before the chatter
+// event the run crawled on to run.max_steps (0.1 s would take ~1e9 steps).
+// The spin over the run: the vertical stays fixed (N acts through the centre) so Omega is omega3,
+// constant but for the integrator's error (tolerance 1e-9 of sqrt(g/R) = 14 1/s per step).
+constexpr double kSpinKeptTol = 1e-6;  // 1/s
+
+struct SpinningSlide {
+  double R = 0.05, m = 1.0, k = 0.2, lambda = 1e7, g = 9.81, v0 = 0.2, Omega0 = 20.0;
+  [[nodiscard]] double slip_stop_time() const { return 2.0 * v0 / (7.0 * k * g); }
+};
+
+// The run's summary and the contact at its end.
+struct SlideEnd {
+  RunSummary s;
+  ContactState c;
+};
+
+SlideEnd spinning_slide(const char* law_name, const RunOptions& o) {
+  const SpinningSlide p;
+  const auto law = friction::make_law(law_name);
+  const BodyOnPlane sys(sphere_body(p.R, p.m), PlaneContact{p.k, p.lambda, p.g}, *law);
+  const StateVector x0 = make_state({p.v0, 0.0, 0.0}, {0.0, 0.0, p.Omega0}, Eigen::Vector3d::UnitZ(),
+                                    sys.plane().static_height(p.m * p.g));
+  SlideEnd end{simulate(sys, x0, o), {}};
+  end.c = sys.contact_state(end.s.x_final);
+  return end;
+}
+
+RunOptions spinning_slide_options() {
+  RunOptions o;
+  o.t_end = 0.1;
+  o.output_dt = 1e-2;
+  // Without the chatter event the run ends here (max-steps) after a second or so instead of
+  // crawling for minutes: a cap for the test only.
+  o.integrator.max_steps = 50'000;
+  return o;
+}
+
+TEST(DynSimulation, ADiscontinuousLawThatStopsSlippingWhileItSpinsStopsWithChatter) {
+  const SpinningSlide p;
+  const auto [s, c] = spinning_slide("decoupled:r_spin=0", spinning_slide_options());
+  ASSERT_EQ(reason(s), "chatter") << s.message;
+  // Within the budget: the chatter starts where the slip reaches 0, and every one of the
+  // run.max_chatter_steps steps that end the run is shorter than run.chatter_step.
+  const double budget = s.chatter.max_steps.value * s.chatter.step.value;
+  EXPECT_NEAR(s.t_final, p.slip_stop_time(), budget) << s.message;
+  // The spin it kept (no spin moment) is why the stagnation rule does not apply.
+  EXPECT_NEAR(c.Omega, p.Omega0, kSpinKeptTol) << s.message;
+  EXPECT_LT(c.U, s.rest.slip_speed.value);
+  for (const char* part : {"the slip chattered", "'decoupled' is discontinuous at U = 0", "no stick branch"})
+    EXPECT_NE(s.message.find(part), std::string::npos) << part << " in: " << s.message;
+  EXPECT_NE(s.rule.find("run.chatter_step"), std::string::npos) << s.rule;
+  std::vector<std::string> keys;
+  for (const auto& t : s.thresholds) keys.push_back(t.key);
+  EXPECT_EQ(keys, (std::vector<std::string>{"run.max_chatter_steps", "run.chatter_step", "run.rest_slip_speed",
+                                            "run.rest_spin"}));
+}
+
+TEST(DynSimulation, AChatterBudgetOfZeroLeavesTheRunToMaxSteps) {
+  RunOptions o = spinning_slide_options();
+  o.chatter.max_steps = 0;
+  o.integrator.max_steps = 5'000;
+  const RunSummary s = spinning_slide("decoupled:r_spin=0", o).s;
+  EXPECT_EQ(reason(s), "max-steps") << s.message;
+}
+
+TEST(DynSimulation, SmoothLawsOnTheSameStartSlipToZeroWithoutChatter) {
+  // With spin, every coupled law gives a force linear in a small slip (docs/model.md): the slip
+  // dies out smoothly, below run.rest_slip_speed, and the sphere rolls on while it spins.
+  for (const char* name : {"exact", "ellipsoidal", "pade-reconstructed"}) {
+    const auto [s, c] = spinning_slide(name, spinning_slide_options());
+    EXPECT_EQ(reason(s), "t_end") << name << ": " << s.message;
+    EXPECT_LT(c.U, s.rest.slip_speed.value) << name << ": the slip did not reach the watched region";
+    EXPECT_GT(std::abs(c.Omega), s.rest.spin.value) << name;
+  }
 }
 
 TEST(DynSimulation, AVerticalDropBouncesOnWithTheDefaultThresholds) {

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <cmath>
 #include <filesystem>
 #include <cstdlib>
 #include <fstream>
@@ -26,6 +27,31 @@ struct SampleData {
   ContactState c{};
   Sample at(double t) const { return Sample{t, x, c, 2.0, 1.0}; }
 };
+
+TEST(DynTrajectoryCsv, AZeroIsWrittenWithoutItsSign) {
+  // Pure spin: the exact law's F1 comes out as -0.0 (arithmetic residue), and gamma2, v2 may too.
+  // The file writes "0" (no "-0" in a table), and trajectory_row, which the Python module's
+  // columns take, holds what the file reads back: +0.0.
+  const auto file = std::filesystem::temp_directory_path() / ("frictionlab_csv_zero_" + std::to_string(::getpid()) + ".csv");
+  SampleData d;
+  d.x = make_state(Eigen::Vector3d(0, -0.0, 0), Eigen::Vector3d(0, 0, 20), Eigen::Vector3d(0, -0.0, 1), -1e-4);
+  d.c.gamma = Eigen::Vector3d(0, -0.0, 1);
+  d.c.N = 9.81;
+  d.c.Omega = 20;
+  d.c.friction = {-0.0, -0.0, 0.003};
+  d.c.in_contact = true;
+  {
+    TrajectoryCsv csv(file);
+    csv.sample(d.at(-0.0));
+    csv.close();
+  }
+  const std::string text = slurp(file);
+  const std::string row = text.substr(text.find('\n') + 1);
+  EXPECT_EQ(("," + row).find(",-0,"), std::string::npos) << row;
+  EXPECT_EQ(row.rfind("0,0,0,1,", 0), 0u) << row;  // t, gamma1, gamma2, gamma3
+  for (const double x : trajectory_row(d.at(-0.0))) EXPECT_FALSE(x == 0.0 && std::signbit(x)) << row;
+  std::filesystem::remove(file);
+}
 
 TEST(DynTrajectoryCsv, WritesTheHeaderAndOneWholeRowPerSample) {
   const auto file = std::filesystem::temp_directory_path() / ("frictionlab_csv_" + std::to_string(::getpid()) + ".csv");

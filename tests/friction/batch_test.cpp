@@ -55,19 +55,19 @@ TEST(EvaluateCsv, AnyColumnOrderExtraColumnsPassedThroughLosslessOutput) {
   std::getline(lines, row1);
   std::getline(lines, row2);
   EXPECT_FALSE(std::getline(lines, extra));
-  EXPECT_EQ(header, "id,k,N,psi,b,a,Omega,U,note,F1,F2,M");
-  ASSERT_EQ(row1.rfind("p1,0.3,10,0.25,0.5,1.5,-2,0.7,\"x, y\",", 0), 0u) << row1;
+  EXPECT_EQ(header, "id,k,N,psi,b,a,Omega,U,note,law,F1,F2,M");
+  ASSERT_EQ(row1.rfind("p1,0.3,10,0.25,0.5,1.5,-2,0.7,\"x, y\",pade-printed,", 0), 0u) << row1;
 
   // The appended values read back to exactly the doubles of a direct evaluation.
   const auto direct = PadePrintedLaw().evaluate({0.7, -2.0, 1.5, 0.5, 0.25, 10.0, 0.3});
   const auto fields = split_csv_line(row1);
-  ASSERT_EQ(fields.size(), 12u);
-  EXPECT_EQ(std::strtod(std::string(fields[9]).c_str(), nullptr), direct.F1);
-  EXPECT_EQ(std::strtod(std::string(fields[10]).c_str(), nullptr), direct.F2);
-  EXPECT_EQ(std::strtod(std::string(fields[11]).c_str(), nullptr), direct.M);
+  ASSERT_EQ(fields.size(), 13u);
+  EXPECT_EQ(std::strtod(std::string(fields[10]).c_str(), nullptr), direct.F1);
+  EXPECT_EQ(std::strtod(std::string(fields[11]).c_str(), nullptr), direct.F2);
+  EXPECT_EQ(std::strtod(std::string(fields[12]).c_str(), nullptr), direct.M);
   // Pure sliding: F1 = kN is the double nearest 0.1, written in the shortest text that reads back
   // to it (as the input wrote it), not as 0.10000000000000001.
-  EXPECT_EQ(row2, "p2,0.1,1,0,1,1,0,1,plain,0.1,0,0");
+  EXPECT_EQ(row2, "p2,0.1,1,0,1,1,0,1,plain,pade-printed,0.1,0,0");
 }
 
 TEST(EvaluateCsv, ErrorsNameTheLineAndWriteNothing) {
@@ -98,7 +98,7 @@ TEST(EvaluateCsv, AcceptsAByteOrderMarkAndBlankLines) {
   std::string error;
   const std::string out = run("\xEF\xBB\xBF\n  \r\nU,Omega,a,b,psi,N,k\r\n\n1,0,1,1,0,1,0.5\n\n", &error);
   EXPECT_EQ(error, "");
-  EXPECT_EQ(out, "U,Omega,a,b,psi,N,k,F1,F2,M\n1,0,1,1,0,1,0.5,0.5,0,0\n");
+  EXPECT_EQ(out, "U,Omega,a,b,psi,N,k,law,F1,F2,M\n1,0,1,1,0,1,0.5,pade-printed,0.5,0,0\n");
   // Line numbers still count the blank lines.
   run("\xEF\xBB\xBF\nU,Omega,a,b,psi,N,k\n\n1,0,1,1,0,1,x\n", &error);
   EXPECT_NE(error.find("input line 4: column k = 'x' is not a number"), std::string::npos) << error;

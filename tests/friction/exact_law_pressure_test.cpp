@@ -259,7 +259,36 @@ TEST(ExactPressure, UniformAgreesWithTheReferenceWhereTheWindowIsGraded) {
   }
 }
 
-TEST(ExactPressure, FiniteBelowTheAccurateRange) {
+TEST(ExactPressure, ForceNeverPointsAlongTheSlip) {
+  // F1 >= 0 for every centrally symmetric pressure: the points rho and -rho carry the same
+  // pressure and slide with v = U e1 +- Omega J rho =: v1, v2, and with U e1 = (v1 + v2)/2,
+  // (v1/|v1| + v2/|v2|).(v1 + v2) = (|v1| + |v2|)(1 + cos(v1, v2)) >= 0. Fuzzed over every axis
+  // ratio the law accepts, slow to fast slip, psi near the axes, and the two inputs of issue 19
+  // item 10 (the uniform law gave F1 = -1.6e-4 kN at the second, slip ratio 4e-8, b/a = 1e-12).
+  std::mt19937_64 rng(1910);
+  std::uniform_real_distribution<double> uni(0.0, 1.0);
+  std::vector<ContactInput> inputs = {unit(255094.52174620156, 1.0025254830532505e-12, -2.4426969214284204),
+                                      unit(3.9575557720477157e-08, 1.0753224871646648e-12, 3.0505797375823827)};
+  for (int i = 0; i < 3000; ++i) {
+    const double mu = std::pow(10.0, -12.0 * uni(rng));
+    const double s = std::pow(10.0, -12.0 + 24.0 * uni(rng));
+    double psi = kPi * (2.0 * uni(rng) - 1.0);
+    if (i % 2 == 1) psi = (uni(rng) < 0.5 ? 0.0 : kPi / 2) + (uni(rng) < 0.5 ? -1.0 : 1.0) * std::pow(10.0, -12.0 + 10.0 * uni(rng));
+    inputs.push_back(unit(s, mu, psi, uni(rng) < 0.5 ? 1.0 : -1.0));
+  }
+  for (const Pressure p : kAll) {
+    const ExactLaw law(p);
+    const double tol = p == Pressure::hertz ? kExactLawAccuracy : kExactLawPressureAccuracy;
+    for (const ContactInput& in : inputs) {
+      const FrictionForces f = law.evaluate(in);
+      EXPECT_GE(f.F1, -tol) << pressure_name(p) << " s = " << in.U << " mu = " << in.b << " psi = " << in.psi.radians();
+      EXPECT_LE(std::hypot(f.F1, f.F2), 1.0 + tol) << pressure_name(p) << " s = " << in.U << " mu = " << in.b
+                                                     << " psi = " << in.psi.radians();
+    }
+  }
+}
+
+TEST(ExactPressure, FiniteOnSlenderPatchesAtEverySlipRatio) {
   for (const Pressure p : kAll) {
     const ExactLaw law(p);
     for (const double mu : {1e-3, 1e-6, 1e-12}) {

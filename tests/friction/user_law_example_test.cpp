@@ -17,7 +17,7 @@ namespace fl = frictionlab::friction;
 
 // --- docs/extending.md: example begins ---
 // Coulomb sliding friction with a torsional resistance of radius r_spin, decoupled:
-// F1 = kN sign(U), F2 = 0, M = kN r_spin sign(Omega).
+// F1 = kN sign(U), F2 = 0, M = kN r_spin sign(Omega)   (kN = k·N: friction coefficient times normal force).
 class TorsionalLaw final : public fl::FrictionLaw {
  public:
   explicit TorsionalLaw(double r_spin) : r_spin_(r_spin) {}

@@ -7,7 +7,7 @@
 # consumer: tests/consumer configured with CMAKE_PREFIX_PATH=prefix (find_package), built and run.
 # build-tree: tests/consumer configured against the build tree's package (frictionlab_DIR=build).
 # command:  the installed `frictionlab paper` run from a folder without data/ reads the installed
-#           scenarios, not the source tree's.
+#           scenarios, not the source tree's; so does `frictionlab simulate NAME`; --version.
 # python:   the installed Python package (PYTHON_DIR under the prefix) imported by PYTHON from
 #           elsewhere: it is the installed one, and evaluates exact at Omega = 0 (F1 = k N).
 # options-off, subproject: frictionlab configured with tests and benchmarks off, and added to
@@ -125,6 +125,22 @@ elseif(STEP STREQUAL "command")
     message(FATAL_ERROR "the installed command read ${read}, not the installed ${expected}")
   endif()
   message(STATUS "the installed command read ${read}")
+  # A shipped scenario by name, from that folder: the installed one.
+  run("the installed frictionlab simulate sphere-sliding" ${prefix}/bin/frictionlab simulate sphere-sliding
+      --set run.t_end=0.01 --out sim)
+  file(STRINGS ${run_dir}/sim/scenario.toml first LIMIT_COUNT 1)
+  file(REAL_PATH ${prefix}/share/frictionlab/scenarios/sphere-sliding.toml expected)
+  if(NOT first MATCHES "^# (.*) resolved")
+    message(FATAL_ERROR "unexpected first line of scenario.toml: ${first}")
+  endif()
+  file(REAL_PATH ${CMAKE_MATCH_1} read)
+  if(NOT read STREQUAL expected)
+    message(FATAL_ERROR "simulate sphere-sliding read ${read}, not the installed ${expected}")
+  endif()
+  run("frictionlab --version" ${prefix}/bin/frictionlab --version)
+  if(NOT run_output MATCHES "^frictionlab [0-9]+\\.[0-9]+\\.[0-9]+\n$")
+    message(FATAL_ERROR "frictionlab --version printed '${run_output}'")
+  endif()
 
 elseif(STEP STREQUAL "python")
   set(package ${prefix}/${PYTHON_DIR}/frictionlab)

@@ -6,7 +6,10 @@
 #   * a JSON writer: keys written as escaped quotes in string literals (support/json.h);
 #   * a process started by hand (gnuplot: support/gnuplot.h) or gnuplot text quoted by hand
 #     (support::gnuplot_quoted);
-#   * handlers for SIGINT, SIGTERM or SIGHUP (support/interrupt_guard.h).
+#   * handlers for SIGINT, SIGTERM or SIGHUP (support/interrupt_guard.h);
+#   * a file read whole through a stream buffer, whose read errors look like the end of the file
+#     (support/checked_input.h);
+#   * a lock taken by hand on a file (support/folder_lock.h).
 # Comment lines are not code and are skipped.
 # Usage: support_check.sh SOURCE_DIR. Prints each offending line; exit 1 if any.
 set -uo pipefail
@@ -34,5 +37,7 @@ check "JSON written by hand (support::Json)" '\\"[A-Za-z_][A-Za-z0-9_]*\\" *:'
 check "a process started by hand (support::run_gnuplot)" '(^|[^_[:alnum:]])(popen|system|fork|execl|execlp|execv|execvp|posix_spawn|posix_spawnp)\('
 check "gnuplot text quoted by hand (support::gnuplot_quoted)" "(title|label|output) (\\\\\"|')[^'\"]*\" *(<<|\\+)"
 check "a signal handler by hand (support::InterruptGuard)" 'sigaction|signal\(SIG(INT|TERM|HUP)'
+check "a file read whole by hand (support::read_file)" 'rdbuf\(\)|istreambuf_iterator'
+check "a file lock by hand (support::FolderLock)" '(^|[^_[:alnum:]])(flock|lockf)\(|F_SETLK'
 if [ "$status" -eq 0 ]; then echo "support_check: no local copies of friction/support/ in friction/, dynamics/, bench/"; fi
 exit "$status"

@@ -76,6 +76,34 @@ TEST(SupportCheckedOutput, RecordFileWritesEveryRecord) {
   fs::remove_all(dir);
 }
 
+TEST(SupportCheckedOutput, ASizeLimitRefusesTheRecordThatWouldPassItAndKeepsTheFileValid) {
+  const fs::path dir = fresh_dir("size_limit");
+  const std::size_t r = record(0).size();  // 30 bytes
+  const std::uint64_t limit = 3 * r + r / 2;  // room for three records and half of a fourth
+  std::string expected;
+  {
+    RecordFile f(dir / "r.csv", 64);
+    f.set_size_limit(limit);
+    for (int i = 0; i < 3; ++i) {
+      f.append(record(i));
+      expected += record(i);
+    }
+    EXPECT_EQ(f.size(), 3 * r);
+    try {
+      f.append(record(3));
+      ADD_FAILURE() << "the fourth record was taken past the limit";
+    } catch (const SizeLimitReached& e) {
+      EXPECT_NE(std::string(e.what()).find(std::to_string(limit) + " bytes"), std::string::npos) << e.what();
+    }
+    EXPECT_FALSE(f.failed());  // a refusal, not a failure: the file closes cleanly
+    EXPECT_EQ(f.size(), 3 * r);
+    EXPECT_NO_THROW(f.close());
+  }
+  EXPECT_EQ(slurp(dir / "r.csv"), expected);
+  EXPECT_LE(fs::file_size(dir / "r.csv"), limit);
+  fs::remove_all(dir);
+}
+
 TEST(SupportCheckedOutput, DestructorKeepsBufferedRecords) {
   const fs::path dir = fresh_dir("dtor");
   {

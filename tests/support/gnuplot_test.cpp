@@ -34,6 +34,44 @@ TEST(SupportGnuplot, QuotingDoublesSingleQuotesOnly) {
   EXPECT_EQ(gnuplot_quoted(""), "''");
 }
 
+TEST(SupportGnuplot, TextEscapesEnhancedTextMarkup) {
+  EXPECT_EQ(gnuplot_text("plain text, (1 + 2) * 3 = 9 ×"), "'plain text, (1 + 2) * 3 = 9 ×'");
+  EXPECT_EQ(gnuplot_text("decoupled:r_spin=0"), "'decoupled:r\\_spin=0'");
+  EXPECT_EQ(gnuplot_text("a^2 {b} @c &d ~e f\\g it's"), "'a\\^2 \\{b\\} \\@c \\&d \\~e f\\\\g it''s'");
+  EXPECT_EQ(gnuplot_label_column_text("r_spin f\\g"), "'r\\\\_spin f\\\\\\\\g'");
+}
+
+// gnuplot's own enhanced-text typesetting (the dumb terminal draws it as text) shows a title, a key
+// entry, a `set label` and a label from a `using` column exactly as given; unescaped, the same
+// text loses its '_' to a subscript.
+TEST(SupportGnuplot, EnhancedTextShowsTheTextAsItIs) {
+  if (!gnuplot_has_terminal("dumb")) GTEST_SKIP() << "gnuplot is not installed";
+  const fs::path dir = fresh_dir("enhanced");
+  const std::string text = "decoupled:r_spin=0 a^2 {b} @c &d ~e f\\g it's";
+  const auto script = [&](const std::string& title, const std::string& key, const std::string& label,
+                          const std::string& column) {
+    return "set terminal dumb enhanced size 160,24\nset output 'out.txt'\nset xrange [0:10]\nset yrange [0:10]\n"
+           "set key top left\nset title " + title + "\nset label 1 " + label + " at 1,6\n"
+           "plot '-' using 1:2:(" + column + ") with labels left notitle, 2 title " + key + "\n1 3\ne\n";
+  };
+  write(dir / "escaped.gp", script(gnuplot_text("T: " + text), gnuplot_text("K: " + text), gnuplot_text("L: " + text),
+                                   gnuplot_label_column_text("C: " + text)));
+  GnuplotRun run = run_gnuplot(dir, "escaped.gp", "escaped.log");
+  ASSERT_TRUE(run.ok) << run.message << slurp(dir / "escaped.log");
+  const std::string drawn = slurp(dir / "out.txt");
+  for (const char* what : {"T: ", "K: ", "L: ", "C: "})
+    EXPECT_NE(drawn.find(what + text), std::string::npos) << what << "\n" << drawn;
+  // The check can fail: quoted only, the '_' becomes a subscript and the text is not found.
+  write(dir / "raw.gp", script(gnuplot_quoted("T: r_spin"), gnuplot_quoted("K: r_spin"), gnuplot_quoted("L: r_spin"),
+                               gnuplot_quoted("C: r_spin")));
+  run = run_gnuplot(dir, "raw.gp", "raw.log");
+  ASSERT_TRUE(run.ok) << run.message << slurp(dir / "raw.log");
+  const std::string raw = slurp(dir / "out.txt");
+  for (const char* what : {"T: ", "K: ", "L: ", "C: "})
+    EXPECT_EQ(raw.find(std::string(what) + "r_spin"), std::string::npos) << what << "\n" << raw;
+  fs::remove_all(dir);
+}
+
 // gnuplot itself reads the quoted strings back: what it prints is what was quoted.
 TEST(SupportGnuplot, GnuplotReadsQuotedTextBack) {
   if (!gnuplot_has_terminal("dumb")) GTEST_SKIP() << "gnuplot is not installed";

@@ -2,7 +2,15 @@
 
 #include <gtest/gtest.h>
 
+#include <fcntl.h>
+#include <unistd.h>
+
 #include <csignal>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <string>
 #include <stdexcept>
 
 namespace frictionlab::support {
@@ -70,6 +78,36 @@ TEST(SupportInterruptGuardLifetime, EachGuardStartsLowered) {
   }
   const InterruptGuard second;
   EXPECT_FALSE(second.interrupted());
+}
+
+// What a guard with an announcement writes on stderr when `signal` arrives (fd 2 redirected to a file).
+std::string announced(const std::string& announcement, int signal) {
+  const auto file = std::filesystem::temp_directory_path() /
+                    ("frictionlab_interrupt_guard_" + std::to_string(::getpid()));
+  std::fflush(stderr);
+  const int saved = ::dup(STDERR_FILENO);
+  const int fd = ::open(file.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600);
+  ::dup2(fd, STDERR_FILENO);
+  ::close(fd);
+  {
+    const InterruptGuard guard(announcement);
+    std::raise(signal);
+  }
+  ::dup2(saved, STDERR_FILENO);
+  ::close(saved);
+  std::ifstream in(file);
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::filesystem::remove(file);
+  return text;
+}
+
+// Under mpirun a job gets SIGKILL one second after SIGTERM: the line must be out at the signal.
+TEST(SupportInterruptGuardAnnouncement, IsWrittenAtTheFirstSignalWithItsName) {
+  EXPECT_EQ(announced("frictionlab: job: stopped by {signal}; runs kept", SIGTERM),
+            "frictionlab: job: stopped by SIGTERM; runs kept\n");
+  EXPECT_EQ(announced("stopped by {signal}", SIGINT), "stopped by SIGINT\n");
+  EXPECT_EQ(announced("no name here", SIGHUP), "no name here\n");
+  EXPECT_EQ(announced("", SIGTERM), "") << "no announcement: nothing written";
 }
 
 }  // namespace

@@ -37,8 +37,37 @@ TEST(SupportNumberFormat, ShortestReadsBackBitForBit) {
     EXPECT_EQ(std::bit_cast<std::uint64_t>(read_back(text)), std::bit_cast<std::uint64_t>(x)) << text;
   }
   for (const double x : {std::numeric_limits<double>::denorm_min(), std::numeric_limits<double>::max(),
-                         std::numeric_limits<double>::min(), -0.0, 1.0 / 3.0})
+                         std::numeric_limits<double>::min(), 0.0, 1.0 / 3.0})
     EXPECT_EQ(std::bit_cast<std::uint64_t>(read_back(shortest(x))), std::bit_cast<std::uint64_t>(x)) << x;
+}
+
+TEST(SupportNumberFormat, NoTextIsANegativeZero) {
+  // -0.0 prints as "0" everywhere (it reads back equal, 0.0 == -0.0); so does a negative value
+  // that rounds to zero at the precision asked for, as printf would print "-0.00".
+  EXPECT_EQ(shortest(-0.0), "0");
+  std::string line = "x,";
+  append_shortest(line, -0.0);
+  EXPECT_EQ(line, "x,0");
+  EXPECT_EQ(read_back(shortest(-0.0)), -0.0);
+  EXPECT_EQ(message_number(-0.0), "0");
+  EXPECT_EQ(significant(-0.0, 3), "0");
+  line = "y,";
+  append_significant(line, -0.0, 4);
+  EXPECT_EQ(line, "y,0");
+  EXPECT_EQ(fixed(-0.0, 2), "0.00");
+  EXPECT_EQ(fixed(-0.001, 2), "0.00");
+  EXPECT_EQ(fixed(-0.4, 0), "0");
+  EXPECT_EQ(message_list(std::array<double, 2>{-0.0, -1.0}), "[0, -1]");
+  // Negative values that do not round to zero keep their sign; so do the tiniest ones.
+  EXPECT_EQ(fixed(-0.005001, 2), "-0.01");
+  EXPECT_EQ(fixed(-0.6, 0), "-1");
+  EXPECT_EQ(significant(-1e-300, 3), "-1e-300");
+  EXPECT_EQ(shortest(-std::numeric_limits<double>::denorm_min()), "-5e-324");
+  EXPECT_EQ(shortest(-0.25), "-0.25");
+  EXPECT_EQ(without_negative_zero(-0.0), 0.0);
+  EXPECT_FALSE(std::signbit(without_negative_zero(-0.0)));
+  EXPECT_TRUE(std::signbit(without_negative_zero(-2.0)));
+  EXPECT_TRUE(std::isnan(without_negative_zero(kNaN)));
 }
 
 TEST(SupportNumberFormat, AppendShortestAppends) {

@@ -11,6 +11,7 @@
 #include <fstream>
 #include <string>
 
+#include "friction/support/folder_lock.h"
 #include "tests/cli/cli_runner.h"
 #include "tests/dynamics/ensemble/runs_csv_reader.h"
 
@@ -213,6 +214,102 @@ TEST(EnsembleCommand, BadStudiesAndOptionsAreOneLineAndWriteNothing) {
     EXPECT_TRUE(r.out.empty()) << r.out;
     EXPECT_FALSE(fs::exists(out)) << args << ": nothing may be written on bad input";
   }
+  fs::remove_all(dir);
+}
+
+// A read that fails (EIO) was taken for an empty study; the error says the read failed.
+TEST(EnsembleCommand, AFailedReadOfTheStudyIsReportedAsSuch) {
+  const fs::path dir = fresh_dir("eio");
+  const auto r = run_frictionlab("ensemble /proc/self/mem --out " + (dir / "out").string());
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(r.err, "frictionlab: error: reading study file '/proc/self/mem' failed: Input/output error\n");
+  EXPECT_FALSE(fs::exists(dir / "out"));
+}
+
+// The shipped studies are found by name from any folder (dynamics/shipped_data.h).
+TEST(EnsembleCommand, AShippedStudyIsFoundByName) {
+  const fs::path dir = fresh_dir("by_name");
+  fs::create_directories(dir);
+  const auto r = run_frictionlab("ensemble smoke --out out --no-figures", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("8 of 8 runs done"), std::string::npos) << r.out;
+  EXPECT_NE(slurp(dir / "out" / "ensemble.json").find("\"study\": \"smoke\""), std::string::npos);
+  const auto missing = run_frictionlab("ensemble no-such-study --out out2", dir);
+  EXPECT_EQ(missing.exit_code, 1);
+  EXPECT_EQ(missing.err.rfind("frictionlab: error: study 'no-such-study' not found: no file 'no-such-study' here, and "
+                              "no no-such-study or no-such-study.toml in data/studies, ",
+                              0),
+            0u)
+      << missing.err;
+  fs::remove_all(dir);
+}
+
+// Two --resume jobs on one folder both redid the runs it lacked: the folder is held by its job
+// (support/folder_lock.h), and a second job is one line naming the folder and the holder's pid.
+TEST(EnsembleCommand, AFolderInUseByAnotherJobIsRefusedNamingTheHolder) {
+  const fs::path dir = fresh_dir("in_use");
+  const support::FolderLock held(dir / "out");  // this process stands for the other job
+  const auto r = run_frictionlab("ensemble " + kSmoke + " --out " + (dir / "out").string() + " --resume");
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_EQ(r.err, "frictionlab: error: --out " + (dir / "out").string() +
+                       " is in use by another frictionlab job (pid " + std::to_string(::getpid()) + "; " +
+                       (dir / "out" / ".frictionlab.lock").string() + "): wait for it to end, or choose another --out\n");
+  EXPECT_FALSE(fs::exists(dir / "out" / "runs.csv"));
+  fs::remove_all(dir);
+}
+
+// SIGTERM (kill, a batch system's end of allocation) stops the job like Ctrl-C, with one line
+// saying so, what is kept and how to go on; while it runs, a second job on its folder is refused
+// naming it; --resume then finishes the study without redoing a kept run, and no lock file stays.
+TEST(EnsembleCommand, SigtermSaysWhatIsKeptAndResumeFinishes) {
+  const fs::path dir = fresh_dir("sigterm");
+  const fs::path study = write_study(dir, "study.toml", R"(laws = ["exact", "pade-reconstructed"]
+set = ["run.t_end=6", "run.output_dt=0.01"]
+[[vary]]
+key = "initial.gamma3"
+values = [0.97, 0.9, 0.8]
+[replicas]
+count = 4
+size = 1e-6
+)");
+  const fs::path out = dir / "out";
+  const auto rows = [&] {
+    std::error_code ec;
+    if (!fs::exists(out / "runs.csv", ec)) return 0L;
+    return count(slurp(out / "runs.csv"), '\n') - 1;
+  };
+  testing::CommandResult second;
+  std::string holder;
+  const auto r = testing::run_frictionlab_signalled(
+      "ensemble " + study.string() + " --out " + out.string() + " --threads 1", SIGTERM, [&] {
+        if (rows() < 1) return false;
+        holder = slurp(out / ".frictionlab.lock");
+        second = run_frictionlab("ensemble " + study.string() + " --out " + out.string() + " --resume");
+        return true;
+      });
+  EXPECT_EQ(second.exit_code, 1) << second.err;
+  ASSERT_FALSE(holder.empty());
+  EXPECT_NE(second.err.find("is in use by another frictionlab job (pid " + holder.substr(0, holder.size() - 1) + ";"),
+            std::string::npos)
+      << second.err;
+  ASSERT_EQ(r.exit_code, 3) << "the job ended before the signal, or died of it: " << r.err;
+  const long kept = rows();
+  ASSERT_LT(kept, 24) << "stopped too late to test anything";
+  const std::string line = "frictionlab: ensemble: stopped by SIGTERM; " + std::to_string(kept) + " runs are kept in " +
+                           (out / "runs.csv").string() + ", " + std::to_string(24 - kept) +
+                           " remain: add --resume to continue\n";
+  EXPECT_EQ(r.err.substr(r.err.size() - std::min(r.err.size(), line.size())), line) << r.err;
+  EXPECT_EQ(r.err.find("frictionlab:"), r.err.rfind("frictionlab:")) << "one line of frictionlab's own: " << r.err;
+  EXPECT_FALSE(fs::exists(out / ".frictionlab.lock"));
+
+  const auto before = testing::rows_by_run(out / "runs.csv");
+  const auto resumed = run_frictionlab("ensemble " + study.string() + " --out " + out.string() + " --resume --no-figures");
+  ASSERT_EQ(resumed.exit_code, 0) << resumed.err;
+  EXPECT_NE(resumed.out.find("24 of 24 runs done (" + std::to_string(24 - kept) + " this session"), std::string::npos)
+      << resumed.out;
+  const auto after = testing::rows_by_run(out / "runs.csv");
+  for (const auto& [run, row] : before) EXPECT_EQ(after.at(run), row) << "run " << run << " was redone";
+  EXPECT_FALSE(fs::exists(out / ".frictionlab.lock"));
   fs::remove_all(dir);
 }
 

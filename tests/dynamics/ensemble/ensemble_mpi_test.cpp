@@ -4,10 +4,17 @@
 
 #include <gtest/gtest.h>
 
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <thread>
 
 #include "tests/cli/cli_runner.h"
 #include "tests/dynamics/ensemble/runs_csv_reader.h"
@@ -20,9 +27,8 @@ using testing::runs_without_wall_time;
 
 const std::string kSmoke = (fs::path(FRICTIONLAB_SOURCE_DIR) / "data" / "studies" / "smoke.toml").string();
 
-// Runs `mpirun ... APP` (APP: "-np N program args", or an MPI app context "... : ..."), stdout and
-// stderr apart.
-testing::CommandResult mpirun_app(const std::string& app) {
+// The launcher's command line, as mpirun_app runs it (without the redirections).
+std::string launcher_command(const std::string& app) {
   // --oversubscribe: more ranks than cores is allowed (CI machines); --allow-run-as-root: CI runs as root.
   // Under -fsanitize=address, LeakSanitizer is told about OpenMPI's own allocations kept past
   // MPI_Finalize (lsan_openmpi.supp). They are made in components OpenMPI loads and unloads again,
@@ -33,10 +39,15 @@ testing::CommandResult mpirun_app(const std::string& app) {
   const std::string env = "LSAN_OPTIONS='suppressions=" + std::string(FRICTIONLAB_LSAN_SUPPRESSIONS) +
                           ":fast_unwind_on_malloc=0" + (lsan && *lsan ? std::string(":") + lsan : std::string()) +
                           "' ";
-  const std::string launcher = env + std::string(FRICTIONLAB_MPIEXEC) + " -x LSAN_OPTIONS --allow-run-as-root --oversubscribe ";
+  return env + "exec " + std::string(FRICTIONLAB_MPIEXEC) + " -x LSAN_OPTIONS --allow-run-as-root --oversubscribe " + app;
+}
+
+// Runs `mpirun ... APP` (APP: "-np N program args", or an MPI app context "... : ..."), stdout and
+// stderr apart.
+testing::CommandResult mpirun_app(const std::string& app) {
   const auto err = fs::temp_directory_path() / ("frictionlab_mpi_err_" + std::to_string(::getpid()));
   testing::CommandResult r;
-  FILE* pipe = ::popen((launcher + app + " 2>" + err.string()).c_str(), "r");
+  FILE* pipe = ::popen((launcher_command(app) + " 2>" + err.string()).c_str(), "r");
   if (!pipe) return r;
   char buf[4096];
   std::size_t n = 0;
@@ -119,6 +130,57 @@ TEST(EnsembleMpi, ABadStudyIsReportedEvenWhenRankZeroIsSlowToPrintIt) {
   EXPECT_NE(r.err.find("frictionlab: error: cannot read study file '/no/such/study.toml'"), std::string::npos) << r.err;
   EXPECT_EQ(r.err.find("frictionlab: error:"), r.err.rfind("frictionlab: error:")) << "one rank reports: " << r.err;
   EXPECT_FALSE(fs::exists(dir));
+}
+
+// SIGTERM to mpirun (a batch system ending the allocation): mpirun forwards it to the ranks and
+// sends SIGKILL a second later, before a job can finish its step and print its last line; there
+// was no frictionlab line at all. Rank 0 now says at the signal what stopped it, what is kept and
+// how to go on, and --resume finishes the study.
+TEST(EnsembleMpi, SigtermToMpirunSaysWhatIsKeptAndResumeFinishes) {
+  if (::access(FRICTIONLAB_MPIEXEC, X_OK) != 0) GTEST_SKIP() << FRICTIONLAB_MPIEXEC << " is absent: nothing to test";
+  const fs::path dir = testing::fresh_temp_dir("ensemble_mpi_sigterm");
+  fs::create_directories(dir);
+  const fs::path study = dir / "study.toml";
+  std::ofstream(study) << "scenario = \"" << (fs::path(FRICTIONLAB_SOURCE_DIR) / "data/scenarios/egg-printed-a.toml").string()
+                       << "\"\nlaws = [\"exact\"]\nset = [\"run.t_end=6\", \"run.output_dt=0.01\"]\n"
+                          "[[vary]]\nkey = \"initial.gamma3\"\nvalues = [0.97, 0.9, 0.8]\n[replicas]\ncount = 8\nsize = 1e-6\n";
+  const fs::path out = dir / "out";
+  const auto rows = [&] {
+    std::error_code ec;
+    if (!fs::exists(out / "runs.csv", ec)) return 0L;
+    const std::string t = testing::slurp(out / "runs.csv");
+    return static_cast<long>(std::count(t.begin(), t.end(), '\n')) - 1;
+  };
+  const fs::path out_file = dir / "stdout";
+  const fs::path err_file = dir / "stderr";
+  const std::string command = launcher_command("-np 2 " + std::string(FRICTIONLAB_EXE) + " ensemble " + study.string() +
+                                               " --out " + out.string() + " --no-figures");
+  std::fflush(nullptr);
+  const pid_t launcher = ::fork();
+  ASSERT_GE(launcher, 0);
+  if (launcher == 0) {
+    const std::string redirected = command + " >'" + out_file.string() + "' 2>'" + err_file.string() + "'";
+    ::execl("/bin/sh", "sh", "-c", redirected.c_str(), static_cast<char*>(nullptr));
+    ::_exit(127);
+  }
+  const auto until = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  while (rows() < 1 && std::chrono::steady_clock::now() < until) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  ::kill(launcher, SIGTERM);
+  int status = 0;
+  ASSERT_EQ(::waitpid(launcher, &status, 0), launcher);
+  const std::string err = testing::slurp(err_file);
+  const long kept = rows();
+  ASSERT_LT(kept, 24) << "the job ended before the signal: " << err;
+  EXPECT_NE(err.find("frictionlab: ensemble: stopped by SIGTERM: every finished run is kept in " +
+                     (out / "runs.csv").string() + "; rerun with --resume to continue\n"),
+            std::string::npos)
+      << err;
+
+  const auto resumed = testing::run_frictionlab("ensemble " + study.string() + " --out " + out.string() +
+                                                " --resume --no-figures");
+  ASSERT_EQ(resumed.exit_code, 0) << resumed.err;
+  EXPECT_NE(resumed.out.find("24 of 24 runs done"), std::string::npos) << resumed.out;
+  fs::remove_all(dir);
 }
 
 }  // namespace

@@ -154,6 +154,24 @@ TEST(EnsembleStudy, AFolderOrAMissingFileIsAnError) {
   EXPECT_THROW((void)read_study("/no/such/study.toml"), std::invalid_argument);
 }
 
+// A table or dotted key 40000 deep made toml++ recurse out of the stack (a segmentation fault);
+// the study reader refuses it first, naming the rule (dynamics/toml_nesting.h).
+TEST(EnsembleStudy, ADeeplyNestedStudyIsRefusedNotACrash) {
+  constexpr int kDeep = 40000;
+  std::string dotted;
+  for (int i = 0; i < kDeep; ++i) dotted += i ? ".a" : "a";
+  for (const std::string& text : {"[" + dotted + "]\n", dotted + " = 1\n",
+                                  "x = " + std::string(kDeep, '[') + std::string(kDeep, ']') + "\n"}) {
+    try {
+      (void)parse(text);
+      ADD_FAILURE() << text.substr(0, 40) << ": accepted";
+    } catch (const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find("s.toml:1: nested more than 64 levels deep"), std::string::npos)
+          << e.what();
+    }
+  }
+}
+
 TEST(EnsembleStudy, ShippedStudiesRead) {
   const auto dir = std::filesystem::path(FRICTIONLAB_SOURCE_DIR) / "data" / "studies";
   int n = 0;

@@ -188,5 +188,31 @@ TEST(PaperFigureScripts, ImpactQuantitiesOnLogAxesAndBandsBeneathTheMeans) {
   }
 }
 
+// Law specs, names, descriptions and stop reasons are shown as they are: their '_' (r_spin,
+// max_steps) would otherwise be typeset as a subscript by the enhanced-text terminals. The key and
+// the titles escape them once (support::gnuplot_text); the stop labels, read through a `using`
+// column, twice (support::gnuplot_label_column_text).
+TEST(PaperFigureScripts, UserTextIsEscapedForEnhancedText) {
+  FigureGroup g{"egg_x", "a", "omega_3 = 100", {}};
+  g.runs = {run("exact"), run("decoupled:r_spin=0", false, "max_steps at t = 1 s")};
+  const fs::path dir = fs::temp_directory_path() / ("frictionlab_figure_text_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  const auto names = write_figure_scripts(dir, {g});
+  ASSERT_FALSE(names.empty());
+  for (const auto& name : names) {
+    std::ifstream in(dir / name);
+    const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    EXPECT_TRUE(has(text, "title 'decoupled:r\\_spin=0 (× = stop)'")) << name << "\n" << text;
+    EXPECT_TRUE(has(text, ":('decoupled:r\\\\_spin=0: max\\\\_steps at t = 1 s') with labels")) << name;
+    EXPECT_TRUE(has(text, "egg\\_x")) << name;
+    EXPECT_TRUE(has(text, "omega\\_3 = 100")) << name;
+    // No title holds an unescaped '_' (file names do, and must: they are not text).
+    const std::regex title("title '((?:[^']|'')*)'");
+    for (auto m = std::sregex_iterator(text.begin(), text.end(), title); m != std::sregex_iterator(); ++m)
+      EXPECT_FALSE(std::regex_search((*m)[1].str(), std::regex("(^|[^\\\\])_"))) << name << ": " << m->str();
+  }
+  fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace frictionlab::dynamics::paper

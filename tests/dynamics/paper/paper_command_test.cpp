@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "friction/support/folder_lock.h"
 #include "tests/cli/cli_runner.h"
 
 namespace frictionlab {
@@ -113,29 +114,29 @@ TEST(PaperCommand, ATinyJobWritesRunsFiguresAndReport) {
   std::filesystem::remove_all(dir);
 }
 
-// The default output is small: trajectory.csv keeps every 10th sample (0.1 s) and the last one;
+// The default output is small: trajectory.csv keeps every 50th sample (0.5 s) and the last one;
 // --full-trajectories keeps every sample.
 TEST(PaperCommand, TrajectoriesAreThinnedUnlessAskedForInFull) {
   for (const bool full : {false, true}) {
     const auto dir = fresh_dir(full ? "full" : "thin");
-    const auto r = run_frictionlab(tiny_job(dir, full ? "--full-trajectories" : ""));
+    const auto r = run_frictionlab(tiny_job(dir, std::string("--set run.t_end=0.7") + (full ? " --full-trajectories" : "")));
     ASSERT_EQ(r.exit_code, 0) << r.err;
     const auto run = dir / "runs" / "egg-homogeneous-c" / "exact";
     const long samples = json_integer(slurp(run / "summary.json"), "trajectory_rows");
-    ASSERT_EQ(samples, 21);  // t = 0, 0.01, ..., 0.2 (the final time is one of them)
+    ASSERT_EQ(samples, 71);  // t = 0, 0.01, ..., 0.7 (the final time is one of them)
     const auto rows = lines_of(slurp(run / "trajectory.csv"));
     ASSERT_FALSE(rows.empty());
     EXPECT_EQ(rows.front().rfind("t,gamma1", 0), 0u);
-    EXPECT_EQ(static_cast<long>(rows.size()) - 1, full ? samples : 3) << (full ? "full" : "thinned");  // 0, 0.1, 0.2
+    EXPECT_EQ(static_cast<long>(rows.size()) - 1, full ? samples : 3) << (full ? "full" : "thinned");  // 0, 0.5, 0.7
     if (!full) {
-      EXPECT_EQ(rows[2].rfind("0.1,", 0), 0u) << rows[2];
-      EXPECT_EQ(rows[3].rfind("0.2,", 0), 0u) << rows[3];
+      EXPECT_EQ(rows[2].rfind("0.5,", 0), 0u) << rows[2];
+      EXPECT_EQ(rows[3].rfind("0.7", 0), 0u) << rows[3];
       // The printed law's run stops at 0.0413 s, between two kept samples: its last row is kept.
       const auto stopped = lines_of(slurp(dir / "runs" / "egg-homogeneous-c" / "pade-printed" / "trajectory.csv"));
       ASSERT_EQ(stopped.size(), 3u);
       EXPECT_EQ(stopped[2].rfind("0.0413", 0), 0u) << stopped[2];
     }
-    EXPECT_NE(slurp(run / "features.json").find("\"every_nth_sample\": " + std::string(full ? "1" : "10")),
+    EXPECT_NE(slurp(run / "features.json").find("\"every_nth_sample\": " + std::string(full ? "1" : "50")),
               std::string::npos);
     std::filesystem::remove_all(dir);
   }
@@ -194,6 +195,21 @@ TEST(PaperCommand, AnInterruptedJobSaysSoInItsReportAndSummaryLine) {
   EXPECT_EQ(report.rfind("> **INTERRUPTED**", 0), 0u) << report.substr(0, 300);
   EXPECT_NE(report.find("--resume"), std::string::npos);
   EXPECT_NE(slurp(dir / "behaviour.csv").find(",interrupted,"), std::string::npos);
+  std::filesystem::remove_all(dir);
+}
+
+// Two jobs on one folder (two --resume) both redid the same runs: a job holds its folder
+// (support/folder_lock.h), and a second one is one line naming the folder and the holder.
+TEST(PaperCommand, AFolderInUseByAnotherJobIsRefusedNamingTheHolder) {
+  const auto dir = fresh_dir("in_use");
+  const support::FolderLock held(dir);  // this process stands for the other job
+  const auto r = run_frictionlab(tiny_job(dir, "--resume"));
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_EQ(r.err, "frictionlab: error: --out " + dir.string() + " is in use by another frictionlab job (pid " +
+                       std::to_string(::getpid()) + "; " + (dir / ".frictionlab.lock").string() +
+                       "): wait for it to end, or choose another --out\n");
+  EXPECT_TRUE(r.out.empty()) << r.out;
+  EXPECT_FALSE(std::filesystem::exists(dir / "runs")) << "nothing ran";
   std::filesystem::remove_all(dir);
 }
 

@@ -9,6 +9,8 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
+#include <string>
 
 #include "dynamics/puck/puck_study_report.h"
 #include "friction/registry.h"
@@ -91,6 +93,26 @@ TEST(DynPuckStudy, WritesTheReportAndTables) {
   int rows = 0;
   while (std::getline(disk, row)) ++rows;
   EXPECT_EQ(rows, 2);
+}
+
+TEST(DynPuckStudy, LegendsShowLawSpecsAsTheyAre) {
+  // A law spec's '_' is markup to gnuplot's enhanced text (r_spin: "r" with a subscript "spin"):
+  // every key entry escapes it (support::gnuplot_text).
+  PuckStudyOptions o = small_study();
+  o.laws = {"exact", "decoupled:r_spin=0.001"};
+  o.run_kappas = {0.5};  // the ratio figure draws kappa = 1/2
+  o.start_ratios = {4.0};
+  const PuckStudyResults r = run_puck_study(o);
+  const auto out = std::filesystem::path(::testing::TempDir()) / "puck-study-legends";
+  std::filesystem::remove_all(out);
+  (void)write_puck_study(r, out, "test", /*plots=*/true);  // whether gnuplot drew them is not this test's concern
+  for (const char* script : {"drift.gp", "regimes.gp", "ratio.gp", "paths.gp"}) {
+    std::ifstream in(out / "figures" / script);
+    const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    EXPECT_NE(text.find("title 'decoupled:r\\_spin=0.001'"), std::string::npos) << script << "\n" << text;
+    EXPECT_EQ(text.find("r_spin"), std::string::npos) << script << "\n" << text;
+  }
+  std::filesystem::remove_all(out);
 }
 
 }  // namespace

@@ -8,6 +8,8 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <limits>
 #include <string>
 #include <vector>
@@ -17,6 +19,7 @@
 #include "dynamics/simulation.h"
 #include "dynamics/tippe_top/tippe_top_observables.h"
 #include "dynamics/tippe_top/tippe_top_study.h"
+#include "dynamics/tippe_top/tippe_top_study_report.h"
 #include "slide_only_law.h"
 
 namespace frictionlab::dynamics::tippe_top {
@@ -88,6 +91,30 @@ TEST(DynTippeTopStudy, DefaultLawsIncludeTheSpinMomentVariants) {
   EXPECT_TRUE(unavailable.empty());
   for (const std::string spec : {"exact", "decoupled", "decoupled:r_spin=0"})
     EXPECT_EQ(std::count(laws.begin(), laws.end(), spec), 1) << spec;
+}
+
+TEST(DynTippeTopStudy, LegendsShowLawSpecsAsTheyAre) {
+  // The key of gamma3.png named decoupled:r_spin=0 as "decoupled:r" with a subscript "spin=0": a
+  // '_' is markup to the enhanced-text terminal. The legend's text is escaped (support::gnuplot_text).
+  TippeTopStudyResults r;
+  r.laws = {"exact", "decoupled:r_spin=0"};
+  for (const auto& law : r.laws) {
+    TippeTopRun run;
+    run.law = law;
+    run.gamma3_curve = {{0.0, 1.0}, {1.0, -1.0}};
+    run.jellett_curve = {{0.0, 1.0}, {1.0, 1.0}};
+    r.runs.push_back(run);
+  }
+  const std::filesystem::path out = std::filesystem::temp_directory_path() / "frictionlab_tippe_top_legend";
+  std::filesystem::remove_all(out);
+  (void)write_tippe_top_study(r, out, "test", true);  // figures not drawn (no gnuplot) are not this test's concern
+  for (const char* script : {"gamma3.gp", "jellett.gp"}) {
+    std::ifstream in(out / "figures" / script);
+    const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    EXPECT_NE(text.find("title 'decoupled:r\\_spin=0'"), std::string::npos) << script << "\n" << text;
+    EXPECT_EQ(text.find("r_spin"), std::string::npos) << script << "\n" << text;
+  }
+  std::filesystem::remove_all(out);
 }
 
 TEST(DynTippeTop, JellettsQuantityIsConservedWithoutASpinMoment) {

@@ -142,7 +142,7 @@ def slip_frame(F_ellipse, psi, sign):
     return (-sign * (spsi * gx + cpsi * gy), sign * (cpsi * gx - spsi * gy), sign * H)
 
 
-def exact_law_polar(s, mu, psi, sign):
+def exact_law_polar(s, mu, psi, sign, pressure="hertz"):
     """The table's method: polar coordinates about the ICR, both integrals by tanh-sinh.
 
     rho = c + r d(theta) in the ellipse frame (x along the major axis, a = 1, b = mu), with
@@ -153,7 +153,12 @@ def exact_law_polar(s, mu, psi, sign):
     integrated over the directions that meet the patch (all, for an ICR inside), split at the
     major axis and geometrically (ratio 4) from mu/4 away from it, where A = cos^2 + sin^2/mu^2
     varies on every scale from mu to 1; and geometrically from the window's ends (ICR outside) or
-    about the directions where the chord is shortest (ICR inside), for an ICR near the rim."""
+    about the directions where the chord is shortest (ICR inside), for an ICR near the rim.
+
+    `pressure` (generate_pressure_table.py): "hertz" as above; "uniform", p = 1/(pi mu), and
+    "punch", p = (1/(2 pi mu)) / sqrt(A (r+ - r)(r - r-)) (docs/pressure-models.md §1), whose chord
+    integrals are elementary and taken in closed form (the punch's in the angle of
+    r = (r+ + r-)/2 - ((r+ - r-)/2) cos(angle)); only the integral over directions is numerical."""
     s, mu, psi = mpf(s), mpf(mu), mpf(psi)
     cx, cy = sign * s * mp.sin(psi), sign * s * mp.cos(psi)  # the ICR, ellipse frame
     mu2 = mu * mu
@@ -177,7 +182,15 @@ def exact_law_polar(s, mu, psi, sign):
             hertz = scale * mp.sqrt(end * (2 - end))
             return (hertz * r, hertz * r * r)
 
-        I1, I2 = RULE.integrate_with_ends(chord, r1, r2, 2)
+        if pressure == "hertz":
+            I1, I2 = RULE.integrate_with_ends(chord, r1, r2, 2)
+        elif pressure == "uniform":  # p = 1/(pi mu)
+            I1 = (r2 * r2 - r1 * r1) / (2 * mp.pi * mu)
+            I2 = (r2 ** 3 - r1 ** 3) / (3 * mp.pi * mu)
+        else:  # punch: r = mid - half cos(angle), p dr = dangle / (2 pi mu sqrt(A))
+            mid = (r1 + r2) / 2
+            I1 = mid / (2 * mu * mp.sqrt(A))
+            I2 = (mid * mid + half * half / 2) / (2 * mu * mp.sqrt(A))
         return (dx * I1, dy * I1, (cx * dx + cy * dy) * I1 + I2)
 
     rho = mp.sqrt(cx * cx + cy * cy / mu2)
