@@ -1,4 +1,4 @@
-// Cost of the body's right-hand side (dynamics/equations_of_motion.h) per call, and of its parts,
+// Cost of the body's right-hand side (dynamics/body/equations_of_motion.h) per call, and of its parts,
 // on the states of the printed egg's case a (docs/model.md §6): the first 2 s of the run, sampled
 // every 1e-3 s (the egg spins on its lower pole and rises, bouncing: 1023 of the 2001 states are
 // in contact).
@@ -19,11 +19,11 @@
 #include <string>
 #include <vector>
 
-#include "dynamics/body.h"
-#include "dynamics/equations_of_motion.h"
-#include "dynamics/hertz_ellipse.h"
-#include "dynamics/patch_model.h"
-#include "dynamics/simulation.h"
+#include "dynamics/body/body.h"
+#include "dynamics/body/equations_of_motion.h"
+#include "dynamics/contact/hertz_ellipse.h"
+#include "dynamics/contact/patch_model.h"
+#include "dynamics/body/simulation.h"
 #include "friction/registry.h"
 
 namespace frictionlab::bench {
@@ -91,7 +91,7 @@ dynamics::PlaneContact hertz_plane() {
 
 void BM_rhs_hertz(benchmark::State& state, const std::string& spec) { time_rhs(state, spec, hertz_plane()); }
 
-// Hertz's ellipse alone (dynamics/hertz_ellipse.h) at the principal radii of those states.
+// Hertz's ellipse alone (dynamics/contact/hertz_ellipse.h) at the principal radii of those states.
 void BM_hertz_ellipse(benchmark::State& state) {
   const auto law = friction::make_law("exact");
   const dynamics::BodyOnPlane sys(egg_printed(), kPlane, *law);

@@ -1,5 +1,5 @@
 # install() and export() rules. `cmake --install build --prefix P` installs
-#   P/include/friction/..., P/include/dynamics/*.h   the public headers, same include layout
+#   P/include/friction/..., P/include/dynamics/<folder>/*.h   the public headers, same include layout
 #   P/lib/libfrictionlab_*.a                         the libraries of friction/ and dynamics/
 #   P/bin/frictionlab                                the command
 #   P/share/frictionlab/                             data/: scenarios/*.toml, friction-examples.csv
@@ -11,8 +11,9 @@
 # -Dfrictionlab_DIR=<build> uses it without installing.
 #
 # What is installed is decided by folder, for libraries and headers alike: friction/ with its
-# subfolders, and dynamics/ without its subfolders (dynamics/paper/ and dynamics/cli/, like
-# bench/accuracy/, belong to the command). A library added to these folders is installed and
+# subfolders, and the libraries defined in dynamics/CMakeLists.txt with the headers of the folders
+# they are built from (dynamics/core, io, shapes, contact, body); the models, studies and the
+# command in dynamics/puck/, tippe_top/, paper/, ensemble/, cli/ (like bench/accuracy/) are not. A library added to these folders is installed and
 # exported under its target name (or its EXPORT_NAME), which must also be its frictionlab:: alias.
 
 include(CMakePackageConfigHelpers)
@@ -86,10 +87,12 @@ install(TARGETS ${FRICTIONLAB_INSTALLED_LIBRARIES} frictionlab
 # Headers, from the same folders as the libraries.
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/friction/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/friction
         FILES_MATCHING PATTERN "*.h")
-file(GLOB dynamics_headers CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/dynamics/*.h)
-install(FILES ${dynamics_headers} DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/dynamics)
+foreach(folder core io shapes contact body)
+  file(GLOB dynamics_headers CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/dynamics/${folder}/*.h)
+  install(FILES ${dynamics_headers} DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/dynamics/${folder})
+endforeach()
 
-# The shipped data, where the installed command looks for it (dynamics/shipped_data.h).
+# The shipped data, where the installed command looks for it (dynamics/io/shipped_data.h).
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/data/ DESTINATION ${FRICTIONLAB_INSTALL_DATADIR})
 install(FILES ${PROJECT_SOURCE_DIR}/LICENSE DESTINATION ${CMAKE_INSTALL_DOCDIR})
 

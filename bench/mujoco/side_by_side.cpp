@@ -29,10 +29,10 @@
 
 #include "bench/accuracy/report.h"
 #include "bench/mujoco/mujoco_sphere.h"
-#include "dynamics/equations_of_motion.h"  // the body's Sample and Observer
-#include "dynamics/observer.h"
-#include "dynamics/scenario.h"
-#include "dynamics/scenario_run.h"
+#include "dynamics/body/equations_of_motion.h"  // the body's Sample and Observer
+#include "dynamics/core/observer.h"
+#include "dynamics/body/scenario.h"
+#include "dynamics/body/scenario_run.h"
 #include "friction/registry.h"
 #include "friction/support/checked_output.h"
 #include "friction/support/gnuplot.h"

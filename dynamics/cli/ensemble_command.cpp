@@ -16,7 +16,7 @@
 #include "dynamics/cli/option_values.h"
 #include "dynamics/ensemble/ensemble_job.h"
 #include "dynamics/ensemble/mpi_ensemble.h"
-#include "dynamics/shipped_data.h"
+#include "dynamics/io/shipped_data.h"
 #include "friction/support/errors.h"
 #include "friction/support/interrupt_guard.h"
 #include "friction/support/number_format.h"

@@ -1,6 +1,6 @@
 // `frictionlab simulate SCENARIO.toml [--law NAME] [--set key=value]... --out DIR`: one run of the
 // body-on-plane dynamics (docs/dynamics.md), or of the sliding-spinning puck for a scenario with
-// `model = "puck"` (docs/puck.md). SCENARIO may also name a shipped scenario (dynamics/shipped_data.h).
+// `model = "puck"` (docs/puck.md). SCENARIO may also name a shipped scenario (dynamics/io/shipped_data.h).
 // Writes DIR/trajectory.csv, DIR/summary.json and DIR/scenario.toml; prints one line on stdout.
 // Exit codes:
 //   0  the run ended by t_end, rest or rolling;
@@ -22,9 +22,9 @@
 
 #include "dynamics/cli/commands.h"
 #include "dynamics/puck/puck_scenario_run.h"
-#include "dynamics/scenario.h"
-#include "dynamics/scenario_run.h"
-#include "dynamics/shipped_data.h"
+#include "dynamics/body/scenario.h"
+#include "dynamics/body/scenario_run.h"
+#include "dynamics/io/shipped_data.h"
 #include "friction/registry.h"
 #include "friction/support/checked_output.h"
 #include "friction/support/errors.h"

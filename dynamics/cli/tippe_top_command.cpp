@@ -11,7 +11,7 @@
 #include "dynamics/cli/commands.h"
 #include "dynamics/cli/retypable_command.h"
 #include "dynamics/paper/experiment_plan.h"
-#include "dynamics/shipped_data.h"
+#include "dynamics/io/shipped_data.h"
 #include "dynamics/tippe_top/tippe_top_study.h"
 #include "dynamics/tippe_top/tippe_top_study_report.h"
 #include "friction/support/number_format.h"

@@ -7,7 +7,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "dynamics/body_scales.h"
+#include "dynamics/body/body_scales.h"
 #include "dynamics/ensemble/design.h"
 #include "dynamics/ensemble/random_stream.h"
 #include "dynamics/ensemble/replica.h"

@@ -31,7 +31,7 @@
 #include "dynamics/ensemble/study.h"
 #include "dynamics/ensemble/varied_key.h"
 #include "dynamics/puck/puck_scenario.h"
-#include "dynamics/scenario.h"
+#include "dynamics/body/scenario.h"
 
 namespace frictionlab::dynamics::ensemble {
 

@@ -7,7 +7,7 @@
 // RandomStream(derive_seed(seed, start, r)) (the same on every machine, whoever runs it):
 //   gamma -> (gamma + size u) / |gamma + size u|       (a tilt of about size rad)
 //   omega -> omega + size max(|omega|, sqrt(g/R)) w     (sqrt(g/R): the body's rate scale,
-//                                                         dynamics/body_scales.h, for a start at rest)
+//                                                         dynamics/body/body_scales.h, for a start at rest)
 // `size` is the study's replicas.size (dimensionless). v and eps are not perturbed.
 
 #include <cstdint>

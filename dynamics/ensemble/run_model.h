@@ -1,6 +1,6 @@
 #pragma once
 // Which model the runs of a study integrate: the base scenario's top-level `model`
-// (dynamics/scenario.h): "body" (a body of revolution on a Hertz plane: the egg, the tippe top)
+// (dynamics/body/scenario.h): "body" (a body of revolution on a Hertz plane: the egg, the tippe top)
 // or "puck" (the sliding-spinning puck, dynamics/puck/). Each model has its own per-run features
 // and so its own columns of runs.csv (dynamics/ensemble/run_record.h) and its own compared
 // features (dynamics/ensemble/feature_comparison.h); the rest of the ensemble is the same.

@@ -3,7 +3,7 @@
 //
 //   run, start, replica, law           the run's index and identity (dynamics/ensemble/ensemble_plan.h)
 //   <varied keys>                      the start's values, as the study names its keys
-//   reason                             the termination reason (dynamics/simulation.h), or "failed":
+//   reason                             the termination reason (dynamics/body/simulation.h), or "failed":
 //                                      the run could not run (its scenario or its law rejected it)
 //   final_class                        where it ended: outcome_class() below
 //   t_final, wall_time, steps, rhs_calls   s; s of one core (scenario, integration and features);

@@ -11,8 +11,8 @@
 // vibration moves within a step) keeps the method's samples.
 
 #include "dynamics/ensemble/decimated_trajectory.h"
-#include "dynamics/equations_of_motion.h"  // the body's Sample and Observer
-#include "dynamics/observer.h"
+#include "dynamics/body/equations_of_motion.h"  // the body's Sample and Observer
+#include "dynamics/core/observer.h"
 #include "dynamics/paper/run_series.h"
 
 namespace frictionlab::dynamics::ensemble {

@@ -11,7 +11,7 @@
 #include <stdexcept>
 
 #include "dynamics/ensemble/variant.h"
-#include "dynamics/toml_document.h"
+#include "dynamics/io/toml_document.h"
 #include "friction/support/checked_input.h"
 #include "friction/support/errors.h"
 #include "friction/support/number_format.h"

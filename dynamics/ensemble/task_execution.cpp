@@ -5,12 +5,12 @@
 #include <exception>
 
 #include "dynamics/ensemble/run_recorder.h"
-#include "dynamics/equations_of_motion.h"
+#include "dynamics/body/equations_of_motion.h"
 #include "dynamics/paper/experiment_report.h"
 #include "dynamics/paper/trajectory_compare.h"
 #include "dynamics/puck/puck_run.h"
 #include "dynamics/puck/puck_summary_json.h"
-#include "dynamics/simulation.h"
+#include "dynamics/body/simulation.h"
 #include "friction/registry.h"
 #include "friction/support/errors.h"
 

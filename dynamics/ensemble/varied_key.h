@@ -16,7 +16,7 @@
 #include <string>
 #include <vector>
 
-#include "dynamics/scenario.h"
+#include "dynamics/body/scenario.h"
 
 namespace frictionlab::dynamics::ensemble {
 

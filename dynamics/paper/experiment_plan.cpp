@@ -5,7 +5,7 @@
 #include <stdexcept>
 #include <system_error>
 
-#include "dynamics/shipped_data.h"
+#include "dynamics/io/shipped_data.h"
 #include "friction/law_spec.h"
 #include "friction/registry.h"
 #include "friction/support/number_format.h"

@@ -10,7 +10,7 @@
 #include <string_view>
 #include <vector>
 
-#include "dynamics/scenario.h"
+#include "dynamics/body/scenario.h"
 #include "friction/registry.h"
 
 namespace frictionlab::dynamics::paper {
@@ -66,7 +66,7 @@ struct RunSpec {
 /// "a,b , c" -> {"a", "b", "c"}; an empty item is std::invalid_argument naming `what`.
 [[nodiscard]] std::vector<std::string> split_list(std::string_view list, std::string_view what);
 
-/// The scenarios/ of the first shipped data folder (dynamics/shipped_data.h: data/ here, the
+/// The scenarios/ of the first shipped data folder (dynamics/io/shipped_data.h: data/ here, the
 /// installed data, the source tree's) that has <egg>-a.toml; else the source tree's.
 [[nodiscard]] std::filesystem::path default_scenario_dir();
 

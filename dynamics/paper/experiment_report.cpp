@@ -9,7 +9,7 @@
 #include <thread>
 
 #include "dynamics/paper/figure_data.h"
-#include "dynamics/state.h"
+#include "dynamics/body/state.h"
 #include "friction/support/checked_output.h"
 #include "friction/support/number_format.h"
 

@@ -24,7 +24,7 @@
 #include "dynamics/paper/run_features.h"
 #include "dynamics/paper/run_progress.h"
 #include "dynamics/paper/run_record.h"
-#include "dynamics/simulation.h"
+#include "dynamics/body/simulation.h"
 
 namespace frictionlab::dynamics::paper {
 

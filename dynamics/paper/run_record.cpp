@@ -9,7 +9,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "dynamics/state.h"
+#include "dynamics/body/state.h"
 #include "friction/support/checked_input.h"
 #include "friction/support/checked_output.h"
 #include "friction/support/number_format.h"

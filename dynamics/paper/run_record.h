@@ -10,7 +10,7 @@
 //                   t, gamma3 and its 1-s moving average (computed from every sample), at every
 //                   kComparisonEvery-th sample and the last, in the shortest round-trip form.
 //
-// A finished run is read back from summary.json (dynamics/summary_json.h), features.json
+// A finished run is read back from summary.json (dynamics/body/summary_json.h), features.json
 // (dynamics/paper/feature_json.h) and gamma3.csv; every number reads back to the same double, so a
 // resumed job reports what the first job measured.
 
@@ -19,7 +19,7 @@
 #include <string_view>
 #include <vector>
 
-#include "dynamics/simulation.h"
+#include "dynamics/body/simulation.h"
 #include "friction/support/json.h"
 
 namespace frictionlab::dynamics::paper {

@@ -6,12 +6,12 @@
 #include <cstddef>
 #include <vector>
 
-#include "dynamics/equations_of_motion.h"  // the body's Sample and Observer
-#include "dynamics/observer.h"
+#include "dynamics/body/equations_of_motion.h"  // the body's Sample and Observer
+#include "dynamics/core/observer.h"
 
 namespace frictionlab::dynamics::paper {
 
-/// One run, sampled (dynamics/observer.h: t = 0, every output interval, the final time).
+/// One run, sampled (dynamics/core/observer.h: t = 0, every output interval, the final time).
 struct RunSeries {
   std::vector<double> t;           ///< s
   std::vector<double> gamma3;      ///< cosine of the nutation angle (upward vertical, body axis)

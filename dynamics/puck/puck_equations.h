@@ -21,8 +21,8 @@
 
 #include <string>
 
-#include "dynamics/observer.h"
-#include "dynamics/pole_watch.h"
+#include "dynamics/core/observer.h"
+#include "dynamics/core/pole_watch.h"
 #include "dynamics/puck/puck.h"
 #include "dynamics/puck/puck_state.h"
 #include "friction/law.h"
@@ -48,12 +48,12 @@ struct PuckContact {
 
 struct PuckRunSummary;  // dynamics/puck/puck_run.h
 
-/// A model of the integration loop (dynamics/run_loop.h): the types and the members after "The
+/// A model of the integration loop (dynamics/core/run_loop.h): the types and the members after "The
 /// model interface" below; its events (the stops of slip and spin, held) are
 /// dynamics/puck/puck_run.h's.
 class PuckOnPlane {
  public:
-  // The model interface of dynamics/run_loop.h: the mode is which components are held.
+  // The model interface of dynamics/core/run_loop.h: the mode is which components are held.
   static constexpr int kSize = PuckLayout::kSize;
   using State = PuckState;
   using Contact = PuckContact;
@@ -98,7 +98,7 @@ class PuckOnPlane {
   const friction::FrictionLaw& law_;
 };
 
-/// A sample and an observer of the puck's runs (dynamics/observer.h); the sample's mode is the holds.
+/// A sample and an observer of the puck's runs (dynamics/core/observer.h); the sample's mode is the holds.
 using PuckSample = SampleOf<PuckOnPlane>;
 using PuckObserver = ObserverOf<PuckOnPlane>;
 

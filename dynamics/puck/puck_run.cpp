@@ -5,8 +5,8 @@
 #include <limits>
 #include <string>
 
-#include "dynamics/rest_event.h"
-#include "dynamics/run_loop.h"
+#include "dynamics/core/rest_event.h"
+#include "dynamics/core/run_loop.h"
 #include "friction/support/number_format.h"
 
 namespace frictionlab::dynamics::puck {

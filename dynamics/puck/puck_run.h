@@ -1,6 +1,6 @@
 #pragma once
 // One run of the puck (docs/puck.md): integrates dynamics/puck/puck_equations.h on the integration
-// loop every model shares (dynamics/run_loop.h: free steps under scaled error control, samples
+// loop every model shares (dynamics/core/run_loop.h: free steps under scaled error control, samples
 // inside accepted steps, the law's poles, limits and failures) from t = 0 to an event, and returns
 // a summary. The puck adds its own events: the stops of slip and spin, located and held.
 //
@@ -14,10 +14,10 @@
 //   spin stops  |Omega| falls below run.rest_spin (default 1e-3 sqrt(g/a)): the same for omega
 //               (I Omega^2/2 counted as spinning work);
 //   rest        both have stopped: the run ends (reason "rest").
-// The thresholds scale with the puck as those of the body do with its size (dynamics/rest_event.h),
+// The thresholds scale with the puck as those of the body do with its size (dynamics/core/rest_event.h),
 // the size being the patch's major semi-axis a; at the defaults U/(a |Omega|) = 1 on both
-// thresholds. The other reasons are the body's (dynamics/simulation.h): t_end, law-pole (watched
-// as for the body, dynamics/pole_watch.h), non-finite, law-error, integrator-failure, max-steps,
+// thresholds. The other reasons are the body's (dynamics/body/simulation.h): t_end, law-pole (watched
+// as for the body, dynamics/core/pole_watch.h), non-finite, law-error, integrator-failure, max-steps,
 // interrupted, output-error, output-limit.
 //
 // The terminal ratio: U/(a |Omega|) at the first of the two stops (the last moment both motions
@@ -33,12 +33,12 @@
 #include <string>
 #include <vector>
 
-#include "dynamics/body_scales.h"
-#include "dynamics/observer.h"
+#include "dynamics/body/body_scales.h"
+#include "dynamics/core/observer.h"
 #include "dynamics/puck/puck_equations.h"
-#include "dynamics/run_options.h"
-#include "dynamics/run_summary.h"
-#include "dynamics/threshold.h"
+#include "dynamics/core/run_options.h"
+#include "dynamics/core/run_summary.h"
+#include "dynamics/core/threshold.h"
 
 namespace frictionlab::dynamics::puck {
 
@@ -50,7 +50,7 @@ struct RatioAtEnergy {
   double ratio = 0.0;     ///< U/(a |Omega|)
 };
 
-/// The puck's run: the core's summary (dynamics/run_summary.h) and what the puck's events record.
+/// The puck's run: the core's summary (dynamics/core/run_summary.h) and what the puck's events record.
 struct PuckRunSummary : RunSummaryOf<PuckState> {
   Holds holds;                 ///< at the end
   Threshold slip_speed;        ///< as applied
@@ -81,7 +81,7 @@ struct PuckRunSummary : RunSummaryOf<PuckState> {
 /// 1/v), whose q creeps towards 1), has none.
 [[nodiscard]] double aitken_limit(const std::vector<RatioAtEnergy>& ratios);
 
-/// The scales of a puck (dynamics/body_scales.h) with the patch's major semi-axis a as its size.
+/// The scales of a puck (dynamics/body/body_scales.h) with the patch's major semi-axis a as its size.
 [[nodiscard]] BodyScales puck_scales(const Puck& puck, double g);
 
 /// The absolute tolerance scales of the puck's state: position a, heading 1, v sqrt(g a),

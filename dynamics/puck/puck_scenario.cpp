@@ -3,10 +3,10 @@
 #include <cmath>
 #include <sstream>
 
-#include "dynamics/output_limit.h"
+#include "dynamics/core/output_limit.h"
 #include "dynamics/puck/puck_trajectory_csv.h"
-#include "dynamics/scenario_limits.h"
-#include "dynamics/scenario_toml.h"
+#include "dynamics/body/scenario_limits.h"
+#include "dynamics/io/scenario_toml.h"
 #include "friction/support/errors.h"
 #include "friction/support/number_format.h"
 

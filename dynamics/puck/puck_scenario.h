@@ -1,7 +1,7 @@
 #pragma once
 // A puck scenario (docs/puck.md §2): a TOML file with `model = "puck"` and the sections [puck],
 // [contact], [initial], [run], read through the same machinery as the body's scenarios
-// (dynamics/scenario.h, dynamics/scenario_toml.h): unknown keys, wrong types and values out of
+// (dynamics/body/scenario.h, dynamics/io/scenario_toml.h): unknown keys, wrong types and values out of
 // range are std::invalid_argument naming the key and who set it (the file or a --set); resolved, it
 // is the one source of truth of a run and its `resolved_toml` (scenario.toml beside the run)
 // reproduces it.
@@ -25,8 +25,8 @@
 
 #include "dynamics/puck/puck.h"
 #include "dynamics/puck/puck_state.h"
-#include "dynamics/scenario.h"
-#include "dynamics/simulation.h"
+#include "dynamics/body/scenario.h"
+#include "dynamics/body/simulation.h"
 
 namespace frictionlab::dynamics::puck {
 
@@ -52,7 +52,7 @@ struct PuckScenario {
   std::string resolved_toml;   ///< what scenario.toml beside a run contains
 };
 
-/// Limits of puck values beyond those the body shares (dynamics/scenario_limits.h).
+/// Limits of puck values beyond those the body shares (dynamics/body/scenario_limits.h).
 struct PuckLimits {
   /// kappa = I/(m a^2) within [1e-6, 1e6]: a curling stone on its running band has ~2.5, a ring
   /// on its rim 1, a uniform disk 0.5; far outside, the spin and the slip live on time scales

@@ -3,7 +3,7 @@
 
 #include "dynamics/puck/puck_summary_json.h"
 #include "dynamics/puck/puck_trajectory_csv.h"
-#include "dynamics/run_folder.h"
+#include "dynamics/io/run_folder.h"
 #include "friction/registry.h"
 
 namespace frictionlab::dynamics::puck {

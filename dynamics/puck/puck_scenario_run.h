@@ -1,5 +1,5 @@
 #pragma once
-// A puck scenario run end to end (as dynamics/scenario_run.h for the body): make the law, integrate,
+// A puck scenario run end to end (as dynamics/body/scenario_run.h for the body): make the law, integrate,
 // write DIR/trajectory.csv, DIR/summary.json and DIR/scenario.toml (rerunning it reproduces the
 // run). Every write is checked; the summary is written whatever the termination reason.
 

@@ -3,7 +3,7 @@
 #include <cmath>
 
 #include "dynamics/puck/terminal_ratio.h"
-#include "dynamics/summary_json.h"
+#include "dynamics/body/summary_json.h"
 
 namespace frictionlab::dynamics::puck {
 namespace {

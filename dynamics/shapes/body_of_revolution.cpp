@@ -4,9 +4,9 @@
 #include <algorithm>
 #include <cmath>
 
-#include "dynamics/body_scales.h"
-#include "dynamics/mass_properties.h"
-#include "dynamics/polynomial.h"
+#include "dynamics/body/body_scales.h"
+#include "dynamics/shapes/mass_properties.h"
+#include "dynamics/shapes/polynomial.h"
 
 namespace frictionlab::dynamics::shapes {
 

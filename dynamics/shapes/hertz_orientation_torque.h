@@ -3,7 +3,7 @@
 // (docs/convex-bodies.md §2.4; docs/contact-models.md §3 for the body of revolution).
 //
 // The normal force derives from the potential V = (2/5) lambda(gamma) delta^(5/2), whose stiffness
-// lambda = E* S(R_major, R_minor) (dynamics/hertz_ellipse.h) depends on the orientation through the
+// lambda = E* S(R_major, R_minor) (dynamics/contact/hertz_ellipse.h) depends on the orientation through the
 // principal radii at the contact point. Turning the body at fixed approach delta changes V: with
 // gamma' = gamma x omega (the upward vertical seen from the body),
 //     dV/dt|delta = (2/5) delta^(5/2) grad lambda . (gamma x omega) = -omega . T,
@@ -15,7 +15,7 @@
 
 #include <Eigen/Core>
 
-#include "dynamics/hertz_ellipse.h"
+#include "dynamics/contact/hertz_ellipse.h"
 #include "dynamics/shapes/shape.h"
 
 namespace frictionlab::dynamics::shapes {

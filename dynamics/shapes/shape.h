@@ -20,7 +20,7 @@
 //    principal; each shape states which it returns (a fixed rule, never a rounding accident), and
 //    the split of the gradient between the two radii is a convention there: only the sum
 //    grad R_major + grad R_minor is defined, which is all Hertz's torque needs (its two
-//    elasticities are equal at equal radii, dynamics/hertz_ellipse.h).
+//    elasticities are equal at equal radii, dynamics/contact/hertz_ellipse.h).
 //
 // Shapes are immutable after construction, safe to share between threads, and make no heap
 // allocation in contact() and radii_gradient() (tested).
@@ -33,7 +33,7 @@
 namespace frictionlab::dynamics::shapes {
 
 /// Principal radii closer than this (relative to R_major) are equal: the point is an umbilic.
-/// The same tolerance as the circular patch of dynamics/contact_geometry.h (kCircleRelTol).
+/// The same tolerance as the circular patch of dynamics/shapes/contact_geometry.h (kCircleRelTol).
 inline constexpr double kUmbilicRelTol = 1e-12;
 
 /// Where the body touches the plane for one orientation.

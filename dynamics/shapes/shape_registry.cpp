@@ -6,7 +6,7 @@
 #include <shared_mutex>
 #include <stdexcept>
 
-#include "dynamics/profile.h"
+#include "dynamics/shapes/profile.h"
 #include "dynamics/shapes/body_of_revolution.h"
 #include "dynamics/shapes/ellipsoid.h"
 #include "dynamics/shapes/toroidal_disk.h"
@@ -52,7 +52,7 @@ std::vector<Entry> built_ins() {
                true});
   b.push_back({{"revolution",
                 "convex body of revolution about e3, chi^2 a polynomial in the profile coordinate z (origin z = 0)",
-                {{"chi2", 0, "m^(2-i)", "ascending coefficients of chi^2 in z (dynamics/profile.h's rules)"}},
+                {{"chi2", 0, "m^(2-i)", "ascending coefficients of chi^2 in z (dynamics/shapes/profile.h's rules)"}},
                 [](const ShapeArguments& args) -> std::shared_ptr<const Shape> {
                   return std::make_shared<const BodyOfRevolution>(Profile(args.values("chi2"), args.key("chi2")));
                 }},

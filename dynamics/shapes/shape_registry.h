@@ -8,7 +8,7 @@
 // Built-in kinds and their parameters (SI units):
 //   ellipsoid       semi_axes = [a1, a2, a3]   m, > 0: semi-axes along e1, e2, e3 (dynamics/shapes/ellipsoid.h)
 //   revolution      chi2 = [c0, c1, ...]       ascending coefficients of chi^2 in z, m^(2-i)
-//                                              (dynamics/profile.h's rules; dynamics/shapes/body_of_revolution.h)
+//                                              (dynamics/shapes/profile.h's rules; dynamics/shapes/body_of_revolution.h)
 //   toroidal-disk   radius = R, rim_radius = rho   m, > 0 (dynamics/shapes/toroidal_disk.h)
 
 #include <cstddef>

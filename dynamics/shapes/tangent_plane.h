@@ -16,7 +16,7 @@ struct TangentFrame {
 
 /// The reference basis at the unit vector `gamma`: t1 = (e3 - gamma3 gamma)/rho, the projection of
 /// the shape axis e3 (the meridian direction of a body with axis e3; the same expression as
-/// dynamics/contact_geometry.cpp), rho = sqrt(gamma1^2 + gamma2^2); t1 = e1 at gamma = ±e3 exactly.
+/// dynamics/shapes/contact_geometry.cpp), rho = sqrt(gamma1^2 + gamma2^2); t1 = e1 at gamma = ±e3 exactly.
 [[nodiscard]] TangentFrame tangent_frame(const Eigen::Vector3d& gamma);
 
 /// Principal radii and directions.

@@ -22,8 +22,8 @@
 
 #include <limits>
 
-#include "dynamics/equations_of_motion.h"
-#include "dynamics/state.h"
+#include "dynamics/body/equations_of_motion.h"
+#include "dynamics/body/state.h"
 
 namespace frictionlab::dynamics::tippe_top {
 

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "dynamics/scenario.h"
+#include "dynamics/body/scenario.h"
 #include "dynamics/tippe_top/tippe_top_observables.h"
 #include "friction/registry.h"
 #include "friction/support/errors.h"

@@ -16,7 +16,7 @@
 #include <utility>
 #include <vector>
 
-#include "dynamics/simulation.h"
+#include "dynamics/body/simulation.h"
 
 namespace frictionlab::dynamics::tippe_top {
 
@@ -25,7 +25,7 @@ struct TippeTopStudyOptions {
   std::vector<std::string> laws;   ///< law specs; empty: default_tippe_top_laws()
   /// Accepted steps allowed per run (run.max_steps): a bound on what the chatter event does not
   /// catch (a discontinuous law that chatters where the slip or the spin passes through 0, with
-  /// steps of ~1e-10 s, ends "chatter" after run.max_chatter_steps, dynamics/chatter_watch.h), so
+  /// steps of ~1e-10 s, ends "chatter" after run.max_chatter_steps, dynamics/core/chatter_watch.h), so
   /// that no run grinds for hours.
   long max_steps = 300'000;
   double output_dt = 1e-3;  ///< s: the sampling of gamma3 and of the energy and Jellett checks

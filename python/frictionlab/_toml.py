@@ -77,7 +77,7 @@ def toml_value(v, where="value"):
 
 
 def nesting(value):
-    """How many levels a value nests as TOML (dynamics/toml_nesting.h): each dict key and each
+    """How many levels a value nests as TOML (dynamics/io/toml_nesting.h): each dict key and each
     list item one level below its container ({"run": {"t_end": 1}} is 2). Without recursion, so
     that any depth is measured."""
     deepest = 0

@@ -15,10 +15,10 @@
 
 #include "bindings.h"
 #include "file_errors.h"
-#include "dynamics/scenario.h"
-#include "dynamics/scenario_run.h"
-#include "dynamics/toml_nesting.h"
-#include "dynamics/trajectory_csv.h"
+#include "dynamics/body/scenario.h"
+#include "dynamics/body/scenario_run.h"
+#include "dynamics/io/toml_nesting.h"
+#include "dynamics/body/trajectory_csv.h"
 
 namespace frictionlab::python {
 namespace {
@@ -135,7 +135,7 @@ and progress is called.)doc");
       R"doc(_check_toml_nesting(depth, where)
 
 Internal: raises ValueError (the message of a TOML file nested as deeply) if `depth` levels are
-more than a scenario may nest (dynamics/toml_nesting.h). to_toml() asks before it writes a dict.)doc");
+more than a scenario may nest (dynamics/io/toml_nesting.h). to_toml() asks before it writes a dict.)doc");
 }
 
 }  // namespace frictionlab::python

@@ -15,9 +15,9 @@
 #include <string>
 #include <string_view>
 
-#include "dynamics/equations_of_motion.h"
-#include "dynamics/scenario.h"
-#include "dynamics/simulation.h"
+#include "dynamics/body/equations_of_motion.h"
+#include "dynamics/body/scenario.h"
+#include "dynamics/body/simulation.h"
 #include "friction/registry.h"
 
 namespace {

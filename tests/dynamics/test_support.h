@@ -13,8 +13,8 @@
 #include <stdexcept>
 #include <string>
 
-#include "dynamics/body.h"
-#include "dynamics/state.h"
+#include "dynamics/body/body.h"
+#include "dynamics/body/state.h"
 #include "tests/support/eigen_near.h"
 #include "friction/law.h"
 

@@ -226,7 +226,7 @@ TEST(EnsembleCommand, AFailedReadOfTheStudyIsReportedAsSuch) {
   EXPECT_FALSE(fs::exists(dir / "out"));
 }
 
-// The shipped studies are found by name from any folder (dynamics/shipped_data.h).
+// The shipped studies are found by name from any folder (dynamics/io/shipped_data.h).
 TEST(EnsembleCommand, AShippedStudyIsFoundByName) {
   const fs::path dir = fresh_dir("by_name");
   fs::create_directories(dir);

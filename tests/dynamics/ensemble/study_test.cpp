@@ -155,7 +155,7 @@ TEST(EnsembleStudy, AFolderOrAMissingFileIsAnError) {
 }
 
 // A table or dotted key 40000 deep made toml++ recurse out of the stack (a segmentation fault);
-// the study reader refuses it first, naming the rule (dynamics/toml_nesting.h).
+// the study reader refuses it first, naming the rule (dynamics/io/toml_nesting.h).
 TEST(EnsembleStudy, ADeeplyNestedStudyIsRefusedNotACrash) {
   constexpr int kDeep = 40000;
   std::string dotted;

@@ -11,7 +11,7 @@
 #include "dynamics/ensemble/ensemble_plan.h"
 #include "dynamics/ensemble/feature_comparison.h"
 #include "dynamics/ensemble/task_execution.h"
-#include "dynamics/scenario_run.h"
+#include "dynamics/body/scenario_run.h"
 
 namespace frictionlab::dynamics::ensemble {
 namespace {

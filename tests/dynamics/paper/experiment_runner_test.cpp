@@ -13,8 +13,8 @@
 #include <vector>
 
 #include "dynamics/paper/experiment_plan.h"
-#include "dynamics/scenario.h"
-#include "dynamics/scenario_run.h"
+#include "dynamics/body/scenario.h"
+#include "dynamics/body/scenario_run.h"
 
 namespace frictionlab::dynamics::paper {
 namespace {

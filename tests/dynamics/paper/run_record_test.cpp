@@ -10,8 +10,8 @@
 #include <fstream>
 #include <string>
 
-#include "dynamics/scenario.h"
-#include "dynamics/summary_json.h"
+#include "dynamics/body/scenario.h"
+#include "dynamics/body/summary_json.h"
 
 namespace frictionlab::dynamics::paper {
 namespace {

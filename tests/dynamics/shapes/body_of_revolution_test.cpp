@@ -8,9 +8,9 @@
 #include <cstdint>
 #include <vector>
 
-#include "dynamics/body_scales.h"
-#include "dynamics/contact_geometry.h"
-#include "dynamics/mass_properties.h"
+#include "dynamics/body/body_scales.h"
+#include "dynamics/shapes/contact_geometry.h"
+#include "dynamics/shapes/mass_properties.h"
 #include "dynamics/shapes/ellipsoid.h"
 #include "shape_test_support.h"
 

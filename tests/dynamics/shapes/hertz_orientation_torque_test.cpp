@@ -7,7 +7,7 @@
 #include <memory>
 #include <vector>
 
-#include "dynamics/hertz_patch.h"
+#include "dynamics/contact/hertz_patch.h"
 #include "dynamics/shapes/body_of_revolution.h"
 #include "dynamics/shapes/ellipsoid.h"
 #include "dynamics/shapes/toroidal_disk.h"
@@ -21,7 +21,7 @@ using testing::random_directions;
 constexpr double kEStar = 1e9;     // Pa
 constexpr double kDelta = 2e-5;    // m
 // Central differences of V along the rotation (Richardson, h = 1e-3): ~1e-10 relative; the
-// elasticities are exact to rounding (dynamics/hertz_ellipse.h).
+// elasticities are exact to rounding (dynamics/contact/hertz_ellipse.h).
 constexpr double kFdRelTol = 1e-7;
 
 double stiffness(const Shape& s, const Eigen::Vector3d& g) {
@@ -72,7 +72,7 @@ TEST(DynShapesHertzOrientationTorque, IsConservativeOnTheEgg) {
 }
 
 // For a body of revolution the general form reduces to docs/contact-models.md §3's
-// (2/5) delta^(5/2) lambda'(gamma3) gamma x e3, which dynamics/hertz_patch.h computes.
+// (2/5) delta^(5/2) lambda'(gamma3) gamma x e3, which dynamics/contact/hertz_patch.h computes.
 TEST(DynShapesHertzOrientationTorque, ReducesToTheBodyOfRevolutionsTorque) {
   const Profile egg = Profile::paper_egg();
   const BodyOfRevolution shape(egg);

@@ -14,9 +14,9 @@
 #include <string>
 #include <vector>
 
-#include "dynamics/body.h"
-#include "dynamics/scenario.h"
-#include "dynamics/simulation.h"
+#include "dynamics/body/body.h"
+#include "dynamics/body/scenario.h"
+#include "dynamics/body/simulation.h"
 #include "dynamics/tippe_top/tippe_top_observables.h"
 #include "dynamics/tippe_top/tippe_top_study.h"
 #include "dynamics/tippe_top/tippe_top_study_report.h"

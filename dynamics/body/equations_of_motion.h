@@ -1,0 +1,141 @@
+#pragma once
+// The equations of motion (2)-(5) of the paper with the dots restored (docs/model.md), in the
+// body frame C xi1 xi2 xi3 (origin at the centre of mass, principal axes, J = diag(A, A, C)):
+//
+//   Eq. (2)  m (v' + omega x v) = -m g gamma + N gamma + F
+//   Eq. (3)  J omega' + omega x J omega = r x (N gamma + F) - M gamma
+//   Eq. (4)  gamma' + omega x gamma = 0
+//   Eq. (5)  eps' = u . gamma,   u = v + omega x r   (velocity of the contact point r)
+//   Eq. (6)  N = lambda |eps|^(3/2) for eps < 0, else 0 (dynamics/contact/hertz_contact.h)
+//   Eq. (7)  F = -F1 e1 - F2 e2, torque -M gamma, from the friction law; none when N = 0.
+//
+// e1 is the direction of u - (u.gamma) gamma (the slip of the contact point), U its magnitude;
+// e2 = gamma x e1; Omega = omega . gamma. When U = 0, e1 is the major axis of the patch (psi = 0),
+// so the choice is deterministic. r and the patch come from dynamics/shapes/contact_geometry.h; psi is the
+// angle from e1 to the major axis, CCW about gamma, in [0, pi): the law gets it as the direction
+// (cos psi, sin psi) = (major.e1, major.e2), scaled to unit length; no angle is formed
+// (friction/patch_angle.h), psi.radians() forms it for the outputs.
+//
+// gamma is renormalised where it is read (forces, contact point, eps'); eq. (4) itself moves the
+// stored gamma, which conserves |gamma| exactly, so its drift is only the integrator's error.
+// The state also carries W_slide' = F1 U and W_spin' = M Omega (dynamics/body/state.h).
+//
+// Energy: E = m v^2/2 + omega.J omega/2 + m g h + (2/5) lambda |eps|^(5/2), h = eps - r.gamma the
+// height of the centre of mass; along solutions E' = -(F1 U + M Omega) exactly. With
+// [contact] patch = "hertz" the patch, N and the spring energy come from dynamics/contact/hertz_patch.h
+// (lambda then depends on gamma3, and the torque that makes that contact conservative is added).
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>  // cross products
+#include <optional>
+#include <string>
+
+#include "dynamics/body/body.h"
+#include "dynamics/shapes/contact_geometry.h"
+#include "dynamics/contact/hertz_contact.h"
+#include "dynamics/contact/hertz_patch.h"
+#include "dynamics/core/observer.h"
+#include "dynamics/core/pole_watch.h"
+#include "dynamics/body/state.h"
+#include "friction/law.h"
+
+namespace frictionlab::dynamics {
+
+/// What the right-hand side computes about the contact for one state (also the output columns).
+struct ContactState {
+  Eigen::Vector3d gamma;   ///< upward unit vertical, body frame
+  ContactPoint point;      ///< contact point r and principal radii
+  Eigen::Vector3d u;       ///< velocity of the contact point, m/s
+  Eigen::Vector3d e1;      ///< slip direction (unit, in the contact plane)
+  double U = 0.0;          ///< slip speed |u - (u.gamma) gamma|, m/s
+  double Omega = 0.0;      ///< spin omega.gamma, 1/s
+  double N = 0.0;          ///< normal force, N
+  bool in_contact = false; ///< eps < 0
+  double a = 0.0;          ///< major semi-axis of the patch, m (0 out of contact)
+  double b = 0.0;          ///< minor semi-axis, m
+  friction::PatchAngle psi;  ///< from e1 to the major axis: its direction (cos, sin) as the law
+                             ///< reads it; psi.radians() in [0, pi), formed only when asked for
+  friction::FrictionForces friction;  ///< F1, F2 (N), M (N m); zero out of contact
+  Eigen::Vector3d force;   ///< total contact force N gamma + F, body frame, N
+  Eigen::Vector3d torque;  ///< contact torque about the centre of mass, N m
+};
+
+struct RunSummary;  // dynamics/body/simulation.h
+
+/// The body's discrete mode (dynamics/core/run_loop.h): none yet, the body's equations are the same
+/// throughout a run.
+struct BodyMode {};
+
+/// The right-hand side: a small const functor holding its parameters and the law chosen once.
+/// No heap allocation per call. Not copyable by accident of the law reference: the law must
+/// outlive it. It is a model of the integration loop (dynamics/core/run_loop.h): the types and the
+/// members after "The model interface" below; its events are dynamics/body/simulation.h's.
+class BodyOnPlane {
+ public:
+  // The model interface of dynamics/run_loop.h.
+  static constexpr int kSize = StateLayout::kSize;
+  using State = StateVector;
+  using Contact = ContactState;
+  using Mode = BodyMode;
+  using Summary = RunSummary;
+  class Monitor;  // the body's events, dynamics/body/simulation.cpp
+
+  /// Throws std::invalid_argument for invalid plane parameters.
+  BodyOnPlane(Body body, const PlaneContact& plane, const friction::FrictionLaw& law);
+
+  /// dx/dt at (t, x). Throws what the law throws (invalid input, e.g. a non-finite state).
+  void operator()(double t, const StateVector& x, StateVector& dxdt) const;
+  /// dx/dt at x from its contact quantities `c` = contact_state(x) (for callers that inspect `c`
+  /// first, e.g. dynamics/core/pole_watch.h): operator() is contact_state followed by this.
+  void derivatives(const StateVector& x, const ContactState& c, StateVector& dxdt) const;
+
+  /// The contact quantities at x (the same code path as operator()).
+  [[nodiscard]] ContactState contact_state(const StateVector& x) const {
+    ContactState c;
+    contact_state(x, c);
+    return c;
+  }
+  /// The same, written over `c` (every field): for a caller that keeps it (the integrator's
+  /// right-hand side keeps its latest, dynamics/body/simulation.cpp), without copying the result.
+  void contact_state(const StateVector& x, ContactState& c) const;
+
+  /// Total mechanical energy (J), see the header comment; `c` must be contact_state(x).
+  [[nodiscard]] double energy(const StateVector& x, const ContactState& c) const;
+  [[nodiscard]] double energy(const StateVector& x) const { return energy(x, contact_state(x)); }
+  /// m v^2/2 + omega.J omega/2 (J).
+  [[nodiscard]] double kinetic_energy(const StateVector& x) const;
+
+  // The model interface of dynamics/core/run_loop.h (the mode changes nothing yet).
+  void contact(const StateVector& x, const BodyMode& /*mode*/, ContactState& c) const { contact_state(x, c); }
+  void derivatives(const StateVector& x, const ContactState& c, const BodyMode& /*mode*/, StateVector& dxdt) const {
+    derivatives(x, c, dxdt);
+  }
+  [[nodiscard]] double energy(const StateVector& x, const BodyMode& /*mode*/) const { return energy(x); }
+  /// The shape coordinates of the contact for the watch of the law's poles (dynamics/core/pole_watch.h):
+  /// in contact from the patch; out of contact the patch has shrunk to nothing (s = inf) and b/a
+  /// is its limit as the depth goes to 0, sqrt(R_min/R_max) of the principal radii.
+  [[nodiscard]] static PoleWatch::Point pole_point(const ContactState& c);
+  /// The friction at a state, in one line (for failure messages only; never throws).
+  [[nodiscard]] std::string describe_friction(const StateVector& x, const BodyMode& mode) const;
+  [[nodiscard]] double friction_coefficient() const { return plane_.k; }
+
+  [[nodiscard]] const Body& body() const { return body_; }
+  [[nodiscard]] const PlaneContact& plane() const { return plane_; }
+  [[nodiscard]] const friction::FrictionLaw& law() const { return law_; }
+  [[nodiscard]] const ContactGeometry& geometry() const { return geometry_; }
+
+ private:
+  Body body_;
+  PlaneContact plane_;
+  const friction::FrictionLaw& law_;
+  ContactGeometry geometry_;
+  std::optional<HertzNormalContact> hertz_;  ///< set when plane.patch = hertz
+  Eigen::Vector3d inertia_;      ///< (A, A, C)
+  Eigen::Vector3d inv_inertia_;  ///< (1/A, 1/A, 1/C)
+};
+
+/// A sample and an observer of the body's runs (dynamics/core/observer.h).
+using Sample = SampleOf<BodyOnPlane>;
+using Observer = ObserverOf<BodyOnPlane>;
+
+}  // namespace frictionlab::dynamics

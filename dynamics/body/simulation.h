@@ -1,0 +1,69 @@
+#pragma once
+// One run of the body: integrates the equations of motion (dynamics/body/equations_of_motion.h) on the
+// integration loop every model shares (dynamics/core/run_loop.h) from t = 0 to an event, reporting
+// samples to an observer, and returns a summary. The loop owns the stepping, sampling and the
+// events every model has; the body adds lift-offs, landings, settling, rest, rolling and stagnation.
+//
+// Steps are free: each is the step GSL's error control chooses towards run.t_end (only the last is
+// cut to land on t_end exactly, and run.max_step caps them); samples on the output grid are taken
+// inside accepted steps (dynamics/core/step_sampler.h), so the output interval never changes the steps.
+// The absolute tolerance is scaled per state component (dynamics/body/tolerance_scales.h).
+//
+// Events (docs/dynamics.md §5):
+//   t_end       the end time was reached;
+//   rest        the stagnation region with little kinetic energy, in settled contact
+//               (dynamics/core/rest_event.h, dynamics/core/settling.h);
+//   rolling     the contact stopped slipping and spinning while the body still moves (a sliding
+//               sphere starts to roll; an egg rocks on its pole), in settled contact;
+//   stagnation  the contact stayed in the stagnation region for run.max_stagnant_steps steps in a
+//               row while its normal motion had not settled (a bounce reaching U = Omega = 0):
+//               the integrator can only chatter there, and the model has no sticking branch;
+//   chatter     the slip (or the spin) stayed below its rest threshold while the other did not, with
+//               collapsed steps and repeated reversals, for run.max_chatter_steps steps in a row:
+//               a law discontinuous at U = 0 (or Omega = 0) chatters there (dynamics/core/chatter_watch.h);
+//   law-pole    a denominator of the friction law passes through 0 (dynamics/core/pole_watch.h): no
+//               step, not even a trial stage, may cross it, so the integrator closes in on the
+//               pole until no step above rounding avoids it, and the run stops there;
+//   non-finite  the state or the right-hand side stopped being finite and GSL's retries with
+//               smaller steps, down to machine precision, did not help;
+//   law-error   the friction law rejected its input (message attached);
+//   integrator-failure  GSL gave up (message attached);
+//   max-steps   run.max_steps accepted steps were taken;
+//   interrupted the caller's cancel flag was raised (Ctrl-C on the command line);
+//   output-error / output-limit  the observer's sample() threw OutputFailure / OutputLimitReached
+//               (dynamics/core/observer.h): the run stops at once.
+// Events are checked between accepted steps. On every stop the last good state is kept, sampled
+// (unless the output failed) and returned.
+
+#include "dynamics/body/body_scales.h"
+#include "dynamics/core/chatter_watch.h"
+#include "dynamics/body/equations_of_motion.h"
+#include "dynamics/core/observer.h"
+#include "dynamics/core/output_limit.h"
+#include "dynamics/core/rest_event.h"
+#include "dynamics/core/run_options.h"
+#include "dynamics/core/run_summary.h"
+#include "dynamics/core/settling.h"
+#include "dynamics/body/state.h"
+
+namespace frictionlab::dynamics {
+
+/// The body's run: the core's summary (dynamics/core/run_summary.h) and what the body's events record.
+struct RunSummary : RunSummaryOf<StateVector> {
+  long liftoffs = 0;            ///< contact -> no contact transitions (between steps)
+  long landings = 0;            ///< no contact -> contact
+  double min_normal_force = 0.0;  ///< min N over accepted steps, N
+  double max_gamma_drift = 0.0; ///< max | |gamma| - 1 | over accepted steps
+  BodyScales scales;            ///< the body's scales (thresholds and tolerances)
+  RestRule rest;                ///< the rest thresholds as applied
+  SettleRule settle;            ///< the settling thresholds as applied
+  ChatterRule chatter;          ///< the chatter thresholds as applied
+};
+
+/// Integrates from x0 at t = 0. `observer` may be null. Throws std::invalid_argument for invalid
+/// options or a non-finite x0; every later failure ends the run with a reason instead.
+/// Switches GSL's abort-on-error handler off (process-wide): errors are return codes here.
+[[nodiscard]] RunSummary simulate(const BodyOnPlane& sys, const StateVector& x0, const RunOptions& options,
+                                  Observer* observer = nullptr);
+
+}  // namespace frictionlab::dynamics

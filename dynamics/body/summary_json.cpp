@@ -1,0 +1,85 @@
+#include "dynamics/body/summary_json.h"
+
+namespace frictionlab::dynamics {
+namespace {
+
+support::Json vec3(const Eigen::Vector3d& v) { return support::Json::array({v[0], v[1], v[2]}); }
+
+}  // namespace
+
+support::Json termination_json(Termination reason, const std::string& message, const std::string& rule,
+                               const std::vector<Threshold>& thresholds) {
+  support::Json list = support::Json::array();
+  for (const Threshold& t : thresholds)
+    list.push_back({{"key", t.key}, {"value", t.value}, {"unit", t.unit}, {"source", t.source}});
+  return {{"reason", to_string(reason)}, {"message", message}, {"rule", rule}, {"thresholds", list}};
+}
+
+support::Json summary_json(const Scenario& scenario, const RunSummary& s) {
+  const Body& body = scenario.body;
+  const double weight = body.mass * scenario.contact.g;
+  const StateVector& x = s.x_final;
+  support::Json j;
+  j["scenario"] = {{"name", scenario.name}, {"source", scenario.source}, {"overrides", scenario.overrides}};
+  j["law"] = scenario.law;
+  j["termination"] = termination_json(s.reason, s.message, s.rule, s.thresholds);
+  j["final_time"] = s.t_final;
+  j["t_end"] = scenario.run.t_end;
+  j["steps"] = s.steps;
+  j["rejected_steps"] = s.rejected_steps;
+  j["rhs_calls"] = s.rhs_calls;
+  j["samples"] = s.samples;
+  j["sample_rhs_calls"] = s.sample_rhs_calls;
+  j["hermite_samples"] = s.hermite_samples;
+  j["wall_time_s"] = s.wall_time;
+  j["liftoffs"] = s.liftoffs;
+  j["landings"] = s.landings;
+  j["min_N_over_mg"] = weight > 0.0 ? support::Json(s.min_normal_force / weight) : support::Json(nullptr);
+  j["initial_energy"] = s.initial_energy;
+  j["final_energy"] = s.final_energy;
+  j["work_sliding"] = slide_work(x);
+  j["work_spinning"] = spin_work(x);
+  j["energy_balance_error"] = s.final_energy + slide_work(x) + spin_work(x) - s.initial_energy;
+  j["max_gamma_drift"] = s.max_gamma_drift;
+  j["final_state"] = {{"t", s.t_final},
+                      {"gamma", vec3(vertical(x))},
+                      {"omega", vec3(angular_velocity(x))},
+                      {"v", vec3(velocity(x))},
+                      {"eps", height(x)}};
+  j["body"] = {{"profile", scenario.body_spec.preset.empty() ? std::string("chi2") : scenario.body_spec.preset},
+               {"chi2", body.profile.chi2().coefficients()},
+               {"z_lo", body.profile.z_lo()},
+               {"z_hi", body.profile.z_hi()},
+               {"mass", body.mass},
+               {"com", body.com},
+               {"A", body.A},
+               {"C", body.C},
+               {"homogeneous_centroid", body.homogeneous.centroid}};
+  j["contact"] = {{"k", scenario.contact.k}, {"lambda", scenario.contact.lambda}, {"g", scenario.contact.g}};
+  j["contact"]["patch"] = scenario.contact.patch == PatchModel::hertz ? "hertz" : "section";
+  if (scenario.contact.patch == PatchModel::hertz) j["contact"]["E_star"] = scenario.contact.E_star;
+  j["integrator"] = {{"method", scenario.run.integrator.method},
+                     {"abs_tol", scenario.run.integrator.abs_tol},
+                     {"rel_tol", scenario.run.integrator.rel_tol},
+                     {"output_dt", scenario.run.output_dt},
+                     {"abs_tol_per_component",
+                      {{"v", velocity(s.abs_tol)[0]},
+                       {"omega", angular_velocity(s.abs_tol)[0]},
+                       {"gamma", vertical(s.abs_tol)[0]},
+                       {"eps", height(s.abs_tol)},
+                       {"work", slide_work(s.abs_tol)}}}};
+  j["scales"] = {{"size_R", s.scales.size},
+                 {"speed_sqrt_gR", s.scales.speed},
+                 {"rate_sqrt_g_over_R", s.scales.rate},
+                 {"energy_mgR", s.scales.energy},
+                 {"static_compression", s.scales.compression},
+                 {"liftoff_speed", s.scales.liftoff_speed}};
+  j["rest_thresholds"] = {{"slip_speed", s.rest.slip_speed.value},
+                          {"spin", s.rest.spin.value},
+                          {"kinetic_energy", s.rest.kinetic_energy.value},
+                          {"settle_time", s.settle.time.value},
+                          {"settle_normal_speed", s.settle.normal_speed.value}};
+  return j;
+}
+
+}  // namespace frictionlab::dynamics

@@ -1,0 +1,63 @@
+#pragma once
+// The pieces of a run written to a folder that the body's and the puck's runs share
+// (dynamics/body/scenario_run.h, dynamics/puck/puck_scenario_run.h): the folder with the resolved
+// scenario beside the outputs, a tee of observers, and the summary.json's output record.
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+
+#include "dynamics/core/observer.h"
+#include "friction/support/json.h"
+
+namespace frictionlab::dynamics {
+
+/// Creates `out_dir` and writes `scenario.toml` in it: the resolved scenario, headed by where it
+/// came from, so that `frictionlab simulate scenario.toml` reruns it. support::OutputError on failure.
+void start_run_folder(const std::filesystem::path& out_dir, const std::string& source,
+                      const std::string& resolved_toml);
+
+/// What a run's trajectory writer did, for the summary.
+struct TrajectoryOutput {
+  long rows = 0;            ///< rows given to the writer
+  std::uint64_t bytes = 0;  ///< the file's size, header included, bytes
+  long max_bytes = 0;       ///< its limit, run.max_output_bytes
+  std::string error;        ///< why the file is incomplete (a write or its close failed), or empty
+};
+
+/// Adds {"output": {"trajectory_rows", "trajectory_bytes", "max_output_bytes", "error"}} to
+/// `summary` (error null when there is none) and writes it to `path` atomically.
+void write_run_summary(const std::filesystem::path& path, support::Json summary, const TrajectoryOutput& output);
+
+/// Sends every report of a run to two observers, the second optional (the trajectory writer and a
+/// caller's progress display); `Base` is the run's observer interface (sample, step).
+template <class Base, class SampleType>
+class TeeObserver final : public Base {
+ public:
+  TeeObserver(Base& a, Base* b) : a_(a), b_(b) {}
+  void sample(const SampleType& s) override {
+    a_.sample(s);
+    if (b_) b_->sample(s);
+  }
+  void step(double t) override {
+    a_.step(t);
+    if (b_) b_->step(t);
+  }
+
+ private:
+  Base& a_;
+  Base* b_;
+};
+
+/// Closes a trajectory writer after the run; a failure to close is the run's output error unless
+/// the run already recorded one.
+template <class Writer>
+void close_trajectory(Writer& writer, std::string& output_error) {
+  try {
+    writer.close();
+  } catch (const OutputFailure& e) {
+    if (output_error.empty()) output_error = e.what();
+  }
+}
+
+}  // namespace frictionlab::dynamics
