@@ -52,7 +52,8 @@ namespace {
 // Resolutions: t_vertical is read on samples 0.01 s apart (the shipped studies' output_dt); a tilt
 // of 0.1 deg is below what the plateau's 5-s mean resolves; 0.1 s of time to rest is below the
 // rest event's settling window (~0.1 s); 1e-3 in gamma3 is the precision of "vertical" itself
-// (|gamma3| > 0.999); one lift-off; 1e-3 of the weight; 0.01 J of work (the egg's works are 2-250 J).
+// (|gamma3| > 0.999); one lift-off; 1e-3 of the weight; 0.01 J of work (the egg's works are 2-250 J);
+// one reversal, and its time on the same 0.01-s samples as t_vertical.
 const std::vector<FeatureDef>& body_features() {
   static const std::vector<FeatureDef> features = {
       {"t_vertical", "time to the vertical (|gamma3| > 0.999)", "s", 0.01, [](const RunRecord& r) { return r.t_vertical; }},
@@ -64,6 +65,10 @@ const std::vector<FeatureDef>& body_features() {
       {"min_n_over_mg", "min N/(m g)", "", 1e-3, [](const RunRecord& r) { return r.min_n_over_mg; }},
       {"work_slide", "work against sliding", "J", 0.01, [](const RunRecord& r) { return r.work_slide; }},
       {"work_spin", "work against spinning", "J", 0.01, [](const RunRecord& r) { return r.work_spin; }},
+      {"spin_reversals", "reversals of the spin about the vertical", "", 1.0,
+       [](const RunRecord& r) { return static_cast<double>(r.spin_reversals); }},
+      {"t_first_reversal", "time of the first spin reversal", "s", 0.01,
+       [](const RunRecord& r) { return r.t_first_reversal; }},
   };
   return features;
 }

@@ -36,7 +36,8 @@ struct FeatureDef {
 };
 
 /// The features the report compares: for the body t_vertical, plateau_tilt_deg, t_rest,
-/// final_gamma3, liftoffs, min_n_over_mg, work_slide, work_spin; for the puck slip_stop_time,
+/// final_gamma3, liftoffs, min_n_over_mg, work_slide, work_spin, spin_reversals, t_first_reversal;
+/// for the puck slip_stop_time,
 /// spin_stop_time, log10 of terminal_ratio, path_along, path_lateral, turned, work_slide, work_spin.
 [[nodiscard]] const std::vector<FeatureDef>& compared_features(RunModel model = RunModel::body);
 

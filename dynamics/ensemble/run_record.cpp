@@ -14,8 +14,8 @@ const std::vector<std::string> kBefore = {"run", "start", "replica", "law"};
 const std::vector<std::string> kAfter = {
     "reason",     "final_class",  "t_final",       "wall_time",     "steps",           "rhs_calls",
     "t_vertical", "vertical_pole", "plateau_tilt_deg", "t_rest",    "final_gamma3",    "liftoffs",
-    "min_n_over_mg", "work_slide", "work_spin",     "t_diverge",     "diverge_ref",     "diverge_horizon",
-    "message"};
+    "min_n_over_mg", "work_slide", "work_spin",     "spin_reversals", "t_first_reversal", "final_spin_sense",
+    "t_diverge",     "diverge_ref", "diverge_horizon", "message"};
 const std::vector<std::string> kAfterPuck = {
     "reason",         "final_class",    "t_final",        "wall_time",            "steps",      "rhs_calls",
     "slip_stop_time", "spin_stop_time", "terminal_ratio", "terminal_ratio_limit", "path_along", "path_lateral",
@@ -128,6 +128,9 @@ std::string to_csv_row(const RunRecord& r) {
   num(r.min_n_over_mg);
   num(r.work_slide);
   num(r.work_spin);
+  integer(r.spin_reversals);
+  num(r.t_first_reversal);
+  integer(r.final_spin_sense);
   num(r.t_diverge);
   text(r.diverge_ref);
   num(r.diverge_horizon);
@@ -178,6 +181,9 @@ RunRecord parse_run_row(std::string_view line, std::size_t key_count, RunModel m
   r.min_n_over_mg = parse_number_field(f[i++], "min_n_over_mg");
   r.work_slide = parse_number_field(f[i++], "work_slide");
   r.work_spin = parse_number_field(f[i++], "work_spin");
+  r.spin_reversals = parse_integer(f[i++], "spin_reversals");
+  r.t_first_reversal = parse_number_field(f[i++], "t_first_reversal");
+  r.final_spin_sense = static_cast<int>(parse_integer(f[i++], "final_spin_sense"));
   r.t_diverge = parse_number_field(f[i++], "t_diverge");
   r.diverge_ref = f[i++];
   r.diverge_horizon = parse_number_field(f[i++], "diverge_horizon");

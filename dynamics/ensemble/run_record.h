@@ -15,6 +15,11 @@
 //   final_gamma3                       the mean of gamma3 over the last second
 //   liftoffs, min_n_over_mg            counted and taken at every accepted step
 //   work_slide, work_spin              J: the work against sliding and against spinning friction
+//   spin_reversals, t_first_reversal, final_spin_sense   how often the spin about the vertical
+//                                      Omega changed its sense, when it first did (s; empty: never),
+//                                      and its sense at the end (+1, -1; 0: it died out), with a
+//                                      hysteresis of 2 % of the run's largest |Omega|
+//                                      (dynamics/paper/spin_reversals.h; the rattleback's signature)
 //   t_diverge, diverge_ref, diverge_horizon   the first time gamma3 differs from the run it is
 //                                      compared with by more than 0.05 (empty: not up to the
 //                                      horizon, the end of the shorter run): a law's run against
@@ -76,6 +81,9 @@ struct RunRecord {
   double min_n_over_mg = kNaN;
   double work_slide = kNaN;
   double work_spin = kNaN;
+  long spin_reversals = 0;
+  double t_first_reversal = kNaN;
+  int final_spin_sense = 0;
   double t_diverge = kNaN;
   std::string diverge_ref;
   double diverge_horizon = kNaN;

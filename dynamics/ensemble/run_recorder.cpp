@@ -17,6 +17,7 @@ void RunRecorder::sample(const Sample& s) {
   series_.t.push_back(s.t);
   series_.gamma3.push_back(c.gamma[2]);
   series_.kinetic.push_back(s.kinetic);
+  series_.spin.push_back(c.Omega);
   series_.in_contact.push_back(c.in_contact ? 1 : 0);
   if (decimation_dt_ <= 0.0) return;
 

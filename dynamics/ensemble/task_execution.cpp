@@ -7,6 +7,7 @@
 #include "dynamics/ensemble/run_recorder.h"
 #include "dynamics/body/equations_of_motion.h"
 #include "dynamics/paper/experiment_report.h"
+#include "dynamics/paper/spin_reversals.h"
 #include "dynamics/paper/trajectory_compare.h"
 #include "dynamics/puck/puck_run.h"
 #include "dynamics/puck/puck_summary_json.h"
@@ -102,6 +103,7 @@ RunOutput run_one(const EnsemblePlan& plan, const RunId& id, const ExecuteOption
     series.t.reserve(reserve);
     series.gamma3.reserve(reserve);
     series.kinetic.reserve(reserve);
+    series.spin.reserve(reserve);
     series.in_contact.reserve(reserve);
     RunOptions run = s.run;
     run.cancel = options.cancel;
@@ -126,6 +128,10 @@ RunOutput run_one(const EnsemblePlan& plan, const RunId& id, const ExecuteOption
     r.min_n_over_mg = sum.min_normal_force / weight;
     r.work_slide = slide_work(sum.x_final);
     r.work_spin = spin_work(sum.x_final);
+    const paper::SpinReversals reversals = paper::spin_reversals(series.t, series.spin);
+    r.spin_reversals = reversals.count;
+    r.t_first_reversal = reversals.t_first;
+    r.final_spin_sense = reversals.final_sense;
     if (sum.reason != Termination::t_end && sum.reason != Termination::rest && sum.reason != Termination::rolling)
       r.message = sum.message;
     out.series.ran = true;

@@ -62,6 +62,9 @@ TEST(EnsembleRunRecord, ARowReadsBackAsTheSameRecord) {
   r.min_n_over_mg = 0.0;
   r.work_slide = 247.4;
   r.work_spin = -0.0137;
+  r.spin_reversals = 3;
+  r.t_first_reversal = 1.25;
+  r.final_spin_sense = -1;
   r.diverge_ref = "replica:0";
   r.diverge_horizon = 0.31;
   r.message = "the denominator of F2 passes through 0, \"here\"";
@@ -75,10 +78,13 @@ TEST(EnsembleRunRecord, ARowReadsBackAsTheSameRecord) {
   EXPECT_TRUE(std::isnan(b.t_rest));
   EXPECT_TRUE(std::isnan(b.t_diverge));
   EXPECT_EQ(b.message, r.message);
+  EXPECT_EQ(b.spin_reversals, 3);
+  EXPECT_EQ(b.t_first_reversal, 1.25);
+  EXPECT_EQ(b.final_spin_sense, -1);
   EXPECT_EQ(run_index_of_row(row), 12);
   EXPECT_THROW((void)parse_run_row("1,2,3", 2), std::invalid_argument);
   EXPECT_EQ(runs_header({"initial.gamma3"}).rfind("run,start,replica,law,initial.gamma3,reason,", 0), 0u);
-  EXPECT_EQ(run_columns({"k"}).size(), 4u + 1u + 19u);
+  EXPECT_EQ(run_columns({"k"}).size(), 4u + 1u + 22u);
 }
 
 TEST(EnsembleRunRecord, OutcomeClassesFollowTheEndAndTheFinalTilt) {

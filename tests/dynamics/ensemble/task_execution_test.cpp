@@ -82,6 +82,10 @@ TEST(EnsembleTaskExecution, EveryRunIsEmittedWithItsComparison) {
     }
     EXPECT_GE(r.work_slide, 0.0);
     EXPECT_GT(r.wall_time, 0.0);
+    // Spun about its axis, the egg keeps its sense for 0.5 s: no reversal, a sense at the end.
+    EXPECT_EQ(r.spin_reversals, 0);
+    EXPECT_TRUE(std::isnan(r.t_first_reversal));
+    EXPECT_NE(r.final_spin_sense, 0) << "the recorder keeps Omega";
   }
 }
 
