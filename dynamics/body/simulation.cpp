@@ -93,31 +93,35 @@ class BodyOnPlane::Monitor {
     }
     if (mode.stick) return stick_step(t, x, c, mode, stop);
     if (stick_may_enter(t, x, c)) {
-      // Entry is tried at once, and after a refusal (the wrench it needs is outside the law's limit
-      // set) every kEntryRetrySteps steps; the contact creeps at the limit meanwhile, where the
-      // law's slip is stiff (rate ~ k g/(a |Omega|)): after run.max_stagnant_steps such steps in a
-      // row the run stops "stagnation" (docs/dynamics.md §5).
-      if (creep_steps_ % kEntryRetrySteps == 0 && enter_stick(t, x, c, mode)) {
+      // Entry is tried at every step (a refusal costs one law evaluation when the wrench is outside
+      // in the direction of the latest test); refused (the wrench it needs is outside the law's
+      // limit set), the contact creeps at the limit, where the law's slip is stiff (rate
+      // ~ k g/(a |Omega|)): after a total of run.stick_hold_time of creep since the contact last
+      // left the stagnation region the run stops "stagnation" (docs/dynamics.md §5).
+      if (enter_stick(t, x, c, mode)) {
+        if (creep_steps_ > 0) creep_time_ += t - creep_since_;
         creep_steps_ = 0;
         return After::jumped;
       }
-      ++creep_steps_;
-      if (options_.max_stagnant_steps > 0 && creep_steps_ >= options_.max_stagnant_steps) {
+      if (creep_steps_++ == 0) creep_since_ = t;
+      if (creep_time_ + (t - creep_since_) >= s.stick_hold.value) {
         stop(Termination::stagnation,
              "the contact has stayed in the stagnation region (U = " + message_number(c.U) + " m/s, |Omega| = " +
-                 message_number(std::abs(c.Omega)) + " 1/s) for " + std::to_string(creep_steps_) +
-                 " steps in settled contact while stick could not hold it (the friction wrench rolling needs "
+                 message_number(std::abs(c.Omega)) + " 1/s) since t = " + message_number(creep_since_) + " s (" +
+                 std::to_string(creep_steps_) +
+                 " steps) in settled contact while stick could not hold it (the friction wrench rolling needs "
                  "lies outside the law's limit set; " + std::to_string(s.stick_entries) + " entries, " +
                  std::to_string(s.stick_exits) + " exits): the law's slip at the limit is stiff there");
         s.rule = "in settled contact, U < run.rest_slip_speed and |Omega| < run.rest_spin, stick refused (its "
-                 "wrench outside the law's limit set), for run.max_stagnant_steps accepted steps in a row";
-        s.thresholds = {given_threshold("run.max_stagnant_steps", static_cast<double>(options_.max_stagnant_steps), "steps"),
-                        s.settle.time, s.settle.normal_speed, s.rest.slip_speed, s.rest.spin};
+                 "wrench outside the law's limit set), at every step for run.stick_hold_time";
+        s.thresholds = {s.stick_hold, s.settle.time, s.settle.normal_speed, s.rest.slip_speed, s.rest.spin};
         return After::stopped;
       }
       return After::go_on;
     }
+    // Out of the stagnation region (or not settled): the creep's count starts again.
     creep_steps_ = 0;
+    if (!mode.stick) creep_time_ = 0.0;
     if (settled && options_.stop_when_rolling && s.rest.contact_stagnant(c.in_contact, c.U, c.Omega)) {
       stop(Termination::rolling, "the contact, settled since t = " + message_number(settling_.since()) +
                                      " s, neither slips (U = " + message_number(c.U) +
@@ -204,7 +208,7 @@ class BodyOnPlane::Monitor {
     BodyMode held = mode;
     held.stick = true;
     held.departing = false;
-    const LimitSetTest test = stick_test(y, held);
+    const LimitSetTest test = stick_test(y, held, /*quick_reject=*/true);
     if (!test.inside()) {  // the contact cannot hold: it slips on
       s_.stick_projections = projections;
       s_.stick_projection_loss = loss;
@@ -265,7 +269,9 @@ class BodyOnPlane::Monitor {
   }
 
   // The stick wrench at x (in stick) against the law's limit set; margin -inf out of contact.
-  LimitSetTest stick_test(const StateVector& x, const BodyMode& mode) {
+  // With quick_reject, a negative margin in the direction of the latest test (one law evaluation)
+  // answers "outside" at once: the entry attempts of a creeping contact cost that much.
+  LimitSetTest stick_test(const StateVector& x, const BodyMode& mode, bool quick_reject = false) {
     ContactState c;
     sys_.contact(x, mode, c);
     LimitSetTest out;
@@ -274,7 +280,17 @@ class BodyOnPlane::Monitor {
     const LimitSet set(sys_.law(), sys_.plane().k, c.N, c.a, c.b);
     const Eigen::Vector3d minor = c.gamma.cross(c.major);
     const Eigen::Vector3d rho = c.friction.F1 * c.e1 + c.friction.F2 * c.gamma.cross(c.e1);
-    out = set.test({rho.dot(c.major), rho.dot(minor), c.friction.M}, &warm_);
+    const PatchWrench w{rho.dot(c.major), rho.dot(minor), c.friction.M};
+    if (quick_reject) {
+      const double m = set.margin_at(w, warm_);
+      ++s_.limit_set_evaluations;
+      if (!(m >= 0.0)) {
+        out.margin = m;
+        out.direction = warm_;
+        return out;
+      }
+    }
+    out = set.test(w, &warm_);
     s_.limit_set_evaluations += out.evaluations;
     return out;
   }
@@ -300,8 +316,9 @@ class BodyOnPlane::Monitor {
   long stagnant_unsettled_ = 0;  // accepted steps in a row in the stagnation region, not settled
   // Stick.
   static constexpr double kStickEnergyDrift = 1e-3;  // of run.rest_kinetic_energy: "constant" in the hold rule
-  static constexpr long kEntryRetrySteps = 8;        // steps between entry attempts after a refusal
   long creep_steps_ = 0;          // steps in a row in the stagnation region with stick refused
+  double creep_since_ = 0.0;      // s, the first of them
+  double creep_time_ = 0.0;       // s, crept in earlier runs of such steps since the region was entered
   double t_now_ = 0.0;
   double stick_since_ = 0.0;      // start of the current stick (or of its hold window)
   double energy_at_entry_ = 0.0;  // J, at stick_since_

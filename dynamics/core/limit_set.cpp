@@ -145,6 +145,11 @@ SlipDirection LimitSet::nelder_mead(const PatchWrench& rho, SlipDirection start,
   return p[0];
 }
 
+double LimitSet::margin_at(const PatchWrench& rho_SI, const SlipDirection& d) const {
+  if (degenerate_) return -std::numeric_limits<double>::infinity();
+  return margin({rho_SI.Fx / kN_, rho_SI.Fy / kN_, rho_SI.M / (kN_ * a_)}, wrapped(d));
+}
+
 LimitSetTest LimitSet::test(const PatchWrench& rho_SI, const SlipDirection* warm) const {
   LimitSetTest out;
   if (degenerate_) {

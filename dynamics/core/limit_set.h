@@ -84,6 +84,9 @@ class LimitSet {
   /// Whether `rho` lies in the set: the minimum margin over directions and its direction,
   /// searched also from `warm` if given. A degenerate set gives margin -inf for any rho.
   [[nodiscard]] LimitSetTest test(const PatchWrench& rho, const SlipDirection* warm = nullptr) const;
+  /// The margin (D(d) - rho.d)/(kN) at one direction (one law evaluation): negative proves rho
+  /// outside. -inf for a degenerate set.
+  [[nodiscard]] double margin_at(const PatchWrench& rho, const SlipDirection& d) const;
 
  private:
   [[nodiscard]] friction::FrictionForces evaluate(const SlipDirection& d) const;
