@@ -2,7 +2,7 @@
 
 #include <gtest/gtest.h>
 
-#include "test_support.h"
+#include "tests/dynamics/test_support.h"
 
 namespace frictionlab::dynamics {
 namespace {
