@@ -50,8 +50,12 @@ void BodyOnPlane::contact_in_mode(const StateVector& x, const BodyMode& mode, Co
   p.accel_free = velocity(free);
   p.angular_accel_free = angular_velocity(free);
   const StickWrench w = stick_wrench(p);
-  // The wrench in the law's terms, in the slip frame of the state (e1 the major axis at zero slip):
-  // F = -F1 e1 - F2 e2, so F1 U + M Omega is the power of the residue of slip and spin (~0).
+  // The wrench in the law's terms, in the frame of zero slip (e1 the major axis, psi = 0): the slip
+  // in stick is the integrator's residue, whose direction is rounding noise (out of the contact
+  // plane even, where the contact point moves along the normal). F = -F1 e1 - F2 e2; F1 U + M Omega
+  // stays the power of that residue to first order (~0).
+  c.e1 = c.major;
+  c.psi = friction::PatchAngle();
   const Eigen::Vector3d e2 = c.gamma.cross(c.e1);
   friction::FrictionForces f;
   f.F1 = -w.force.dot(c.e1);
