@@ -27,8 +27,8 @@
 // Accuracy: every margin returned is the margin at a real direction, so it is an upper bound of
 // the true minimum; at a smooth minimum the search places the direction to ~kDirectionTolerance
 // and the margin to ~kDirectionTolerance^2 (~1e-18 of kN); a minimum missed by the grid needs a
-// basin narrower than the grid's cell (pi/8 by pi/10), which no registered law has (their D is
-// smooth off the two lines handled in closed form). Cost: 2 + 128 + ~2 x 60-120 law evaluations
+// basin narrower than the grid's cell (pi/8 by pi/12), which no registered law has (their D is
+// smooth off the two lines handled in closed form). Cost: 3 + 160 + ~2 x 60-120 law evaluations
 // per test (docs/dynamics.md §5 gives the times).
 //
 // Degenerate sets: with kN = 0 (no load, or k = 0) or a law without spin moment (D = 0 at pure
