@@ -44,7 +44,7 @@ BodyOnPlane::BodyOnPlane(Body body, const PlaneContact& plane, const friction::F
   if (plane_.patch == PatchModel::hertz) hertz_.emplace(plane_.E_star);
 }
 
-void BodyOnPlane::contact_state(const StateVector& x, ContactState& c) const {
+void BodyOnPlane::contact_state(const StateVector& x, ContactState& c, bool with_friction) const {
   c.a = 0.0;  // the fields set in contact only: zero out of contact
   c.b = 0.0;
   c.friction = {};
@@ -77,6 +77,7 @@ void BodyOnPlane::contact_state(const StateVector& x, ContactState& c) const {
     c.U = 0.0;
     c.e1 = patch.major;
   }
+  c.major = patch.major;
   const Eigen::Vector3d e2 = c.gamma.cross(c.e1);
   if (patch.circle || c.U == 0.0) {
     c.psi = friction::PatchAngle();  // psi = 0: a circle has no axis; at zero slip e1 is the major axis
@@ -90,11 +91,16 @@ void BodyOnPlane::contact_state(const StateVector& x, ContactState& c) const {
   if (c.N > 0.0) {
     c.a = patch.a;
     c.b = patch.b;
-    c.friction = law_.evaluate({c.U, c.Omega, c.a, c.b, c.psi, c.N, plane_.k});
-    const Eigen::Vector3d F = -c.friction.F1 * c.e1 - c.friction.F2 * e2;  // Eq. (7)
-    c.force += F;
-    c.torque += c.point.r.cross(F) - c.friction.M * c.gamma;
+    if (with_friction) add_friction(c, c.e1, law_.evaluate({c.U, c.Omega, c.a, c.b, c.psi, c.N, plane_.k}));
   }
+}
+
+void BodyOnPlane::add_friction(ContactState& c, const Eigen::Vector3d& e1, const friction::FrictionForces& f) {
+  const Eigen::Vector3d e2 = c.gamma.cross(e1);
+  c.friction = f;
+  const Eigen::Vector3d F = -c.friction.F1 * e1 - c.friction.F2 * e2;  // Eq. (7)
+  c.force += F;
+  c.torque += c.point.r.cross(F) - c.friction.M * c.gamma;
 }
 
 void BodyOnPlane::operator()(double /*t*/, const StateVector& x, StateVector& dxdt) const {

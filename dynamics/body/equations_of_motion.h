@@ -44,6 +44,8 @@ namespace frictionlab::dynamics {
 /// What the right-hand side computes about the contact for one state (also the output columns).
 struct ContactState {
   Eigen::Vector3d gamma;   ///< upward unit vertical, body frame
+  Eigen::Vector3d major;   ///< major axis of the patch (unit, contact plane): the principal
+                           ///< direction of the larger radius of curvature
   ContactPoint point;      ///< contact point r and principal radii
   Eigen::Vector3d u;       ///< velocity of the contact point, m/s
   Eigen::Vector3d e1;      ///< slip direction (unit, in the contact plane)
@@ -62,9 +64,22 @@ struct ContactState {
 
 struct RunSummary;  // dynamics/body/simulation.h
 
-/// The body's discrete mode (dynamics/core/run_loop.h): none yet, the body's equations are the same
-/// throughout a run.
-struct BodyMode {};
+/// The body's discrete mode (dynamics/core/run_loop.h; docs/dynamics.md §5 "stick"), set by the
+/// run's monitor (dynamics/body/simulation.cpp). Default: free, the equations of the header comment.
+struct BodyMode {
+  /// Stick: the contact rolls without slip and without spin; the friction is the wrench that keeps
+  /// it so (dynamics/body/stick.h), not the law's.
+  bool stick = false;
+  /// Left stick: while the slip and the spin are both below their floors (U < departure_slip,
+  /// |Omega| < departure_spin), the law is evaluated in the direction of the exit (the
+  /// maximum-dissipation direction at the boundary of its limit set, dynamics/core/limit_set.h),
+  /// not in the direction of the rounding residue of U and Omega.
+  bool departing = false;
+  double departure_alpha = 0.0;  ///< slip direction from the major axis, rad
+  double departure_beta = 0.0;   ///< elevation, tan beta = a Omega / U, rad
+  double departure_slip = 0.0;   ///< m/s
+  double departure_spin = 0.0;   ///< 1/s
+};
 
 /// The right-hand side: a small const functor holding its parameters and the law chosen once.
 /// No heap allocation per call. Not copyable by accident of the law reference: the law must
@@ -97,7 +112,16 @@ class BodyOnPlane {
   }
   /// The same, written over `c` (every field): for a caller that keeps it (the integrator's
   /// right-hand side keeps its latest, dynamics/body/simulation.cpp), without copying the result.
-  void contact_state(const StateVector& x, ContactState& c) const;
+  void contact_state(const StateVector& x, ContactState& c) const { contact_state(x, c, true); }
+  /// The same, with the law's friction or none (`with_friction` false: F1 = F2 = M = 0).
+  void contact_state(const StateVector& x, ContactState& c, bool with_friction) const;
+  /// The contact in stick or departing (see BodyMode): the friction is the stick wrench, or the
+  /// law's in the exit direction. Throws what the law throws.
+  void contact_in_mode(const StateVector& x, const BodyMode& mode, ContactState& c) const;
+  /// Adds the friction `f` of the law, in the slip frame (e1, gamma x e1), to c's force and torque.
+  static void add_friction(ContactState& c, const Eigen::Vector3d& e1, const friction::FrictionForces& f);
+  /// The body's inertia tensor J about the centre of mass, kg m^2.
+  [[nodiscard]] Eigen::Matrix3d inertia_tensor() const { return inertia_.asDiagonal(); }
 
   /// Total mechanical energy (J), see the header comment; `c` must be contact_state(x).
   [[nodiscard]] double energy(const StateVector& x, const ContactState& c) const;
@@ -105,8 +129,14 @@ class BodyOnPlane {
   /// m v^2/2 + omega.J omega/2 (J).
   [[nodiscard]] double kinetic_energy(const StateVector& x) const;
 
-  // The model interface of dynamics/core/run_loop.h (the mode changes nothing yet).
-  void contact(const StateVector& x, const BodyMode& /*mode*/, ContactState& c) const { contact_state(x, c); }
+  // The model interface of dynamics/core/run_loop.h (the mode changes the friction only: contact()).
+  void contact(const StateVector& x, const BodyMode& mode, ContactState& c) const {
+    if (mode.stick || mode.departing) {
+      contact_in_mode(x, mode, c);  // dynamics/body/stick_contact.cpp
+    } else {
+      contact_state(x, c);
+    }
+  }
   void derivatives(const StateVector& x, const ContactState& c, const BodyMode& /*mode*/, StateVector& dxdt) const {
     derivatives(x, c, dxdt);
   }

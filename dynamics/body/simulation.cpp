@@ -2,10 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 
-#include "dynamics/core/run_loop.h"
+#include "dynamics/body/stick.h"
 #include "dynamics/body/tolerance_scales.h"
+#include "dynamics/core/limit_set.h"
+#include "dynamics/core/run_loop.h"
+#include "dynamics/core/stick_rule.h"
 #include "friction/support/number_format.h"
 
 namespace frictionlab::dynamics {
@@ -13,7 +17,8 @@ namespace frictionlab::dynamics {
 using support::message_number;
 
 // The body's events between steps (docs/dynamics.md §5): lift-offs and landings, the settling of
-// the contact, rest, rolling and stagnation; and its records (min N, the drift of |gamma|).
+// the contact, rest, stick (entry between steps, exit located inside the step), rolling and
+// stagnation; and its records (min N, the drift of |gamma|, the stick counts).
 class BodyOnPlane::Monitor {
  public:
   Monitor(const BodyOnPlane& sys, const RunOptions& options, RunSummary& s)
@@ -24,28 +29,46 @@ class BodyOnPlane::Monitor {
   [[nodiscard]] StateVector tolerance_scales() const { return abs_scale_; }
 
   template <class Stop>
-  After start(double t, StateVector& x, const ContactState& c0, BodyMode& /*mode*/, Stop&& /*stop*/) {
+  After start(double t, StateVector& x, const ContactState& c0, BodyMode& mode, Stop&& /*stop*/) {
     s_.min_normal_force = c0.N;
     s_.max_gamma_drift = std::abs(vertical(x).norm() - 1.0);
     in_contact_ = c0.in_contact;
     settling_.update(t, c0.in_contact, c0.u.dot(c0.gamma));
+    t_now_ = t;
+    // Only with run.settle_time = 0 can a run start settled, and so start in stick.
+    if (stick_may_enter(t, x, c0) && enter_stick(t, x, c0, mode)) return After::jumped;
     return After::go_on;
   }
 
   template <class Stop>
-  bool before_step(double /*t*/, const StateVector& /*x*/, const BodyMode& /*mode*/, Stop&& /*stop*/) {
+  bool before_step(double t, const StateVector& /*x*/, const BodyMode& /*mode*/, Stop&& /*stop*/) {
+    t_now_ = t;
     return false;
   }
 
+  // In stick: the first time inside the step at which the stick wrench leaves the law's limit set
+  // (bisection on the step's samples, dynamics/core/step_sampler.h): the step ends there.
   template <class Step, class Sampler>
-  bool locate(Step& /*step*/, Sampler& /*sampler*/, double& /*t*/, StateVector& /*x*/, BodyMode& /*mode*/) {
-    return false;
+  bool locate(Step& step, Sampler& sampler, double& t, StateVector& x, BodyMode& mode) {
+    if (!mode.stick) return false;
+    const LimitSetTest at_end = stick_test(x, mode);
+    if (at_end.inside()) {
+      warm_ = at_end.direction;
+      return false;
+    }
+    const auto at = locate_first(step, sampler, [&](const StateVector& y) { return !stick_test(y, mode).inside(); });
+    t = step.t1 = at.first;
+    x = step.x1 = at.second;
+    exit_ = stick_test(x, mode);
+    pending_exit_ = true;
+    return true;
   }
 
   template <class Step, class Sampler, class Stop>
-  After after_step(double t, StateVector& x, const ContactState& c, BodyMode& /*mode*/, Step& step,
+  After after_step(double t, StateVector& x, const ContactState& c, BodyMode& mode, Step& step,
                    Sampler& /*sampler*/, Stop&& stop) {
     RunSummary& s = s_;
+    t_now_ = t;
     if (c.in_contact != in_contact_) (c.in_contact ? s.landings : s.liftoffs) += 1;
     in_contact_ = c.in_contact;
     s.min_normal_force = std::min(s.min_normal_force, c.N);
@@ -68,6 +91,37 @@ class BodyOnPlane::Monitor {
       stagnation_rule("< run.rest_kinetic_energy");
       return After::stopped;
     }
+    if (mode.stick) return stick_step(t, x, c, mode, stop);
+    if (stick_may_enter(t, x, c)) {
+      // Entry is tried at every step (a refusal costs one law evaluation when the wrench is outside
+      // in the direction of the latest test); refused (the wrench it needs is outside the law's
+      // limit set), the contact creeps at the limit, where the law's slip is stiff (rate
+      // ~ k g/(a |Omega|)): after a total of run.stick_hold_time of creep since the contact last
+      // left the stagnation region the run stops "stagnation" (docs/dynamics.md §5).
+      if (enter_stick(t, x, c, mode)) {
+        if (creep_steps_ > 0) creep_time_ += t - creep_since_;
+        creep_steps_ = 0;
+        return After::jumped;
+      }
+      if (creep_steps_++ == 0) creep_since_ = t;
+      if (creep_time_ + (t - creep_since_) >= s.stick_hold.value) {
+        stop(Termination::stagnation,
+             "the contact has stayed in the stagnation region (U = " + message_number(c.U) + " m/s, |Omega| = " +
+                 message_number(std::abs(c.Omega)) + " 1/s) since t = " + message_number(creep_since_) + " s (" +
+                 std::to_string(creep_steps_) +
+                 " steps) in settled contact while stick could not hold it (the friction wrench rolling needs "
+                 "lies outside the law's limit set; " + std::to_string(s.stick_entries) + " entries, " +
+                 std::to_string(s.stick_exits) + " exits): the law's slip at the limit is stiff there");
+        s.rule = "in settled contact, U < run.rest_slip_speed and |Omega| < run.rest_spin, stick refused (its "
+                 "wrench outside the law's limit set), at every step for run.stick_hold_time";
+        s.thresholds = {s.stick_hold, s.settle.time, s.settle.normal_speed, s.rest.slip_speed, s.rest.spin};
+        return After::stopped;
+      }
+      return After::go_on;
+    }
+    // Out of the stagnation region (or not settled): the creep's count starts again.
+    creep_steps_ = 0;
+    if (!mode.stick) creep_time_ = 0.0;
     if (settled && options_.stop_when_rolling && s.rest.contact_stagnant(c.in_contact, c.U, c.Omega)) {
       stop(Termination::rolling, "the contact, settled since t = " + message_number(settling_.since()) +
                                      " s, neither slips (U = " + message_number(c.U) +
@@ -105,15 +159,149 @@ class BodyOnPlane::Monitor {
     return After::go_on;
   }
 
-  void finish(const StateVector& /*x*/, const BodyMode& /*mode*/) {}
+  void finish(const StateVector& /*x*/, const BodyMode& mode) {
+    if (mode.stick) s_.stick_time += t_now_ - stick_since_;
+  }
 
  private:
+  // Stick may be entered at (t, x): run.stick, a law whose limit set has an interior, and the
+  // contact settled in the stagnation region with more kinetic energy than rest (rest is checked
+  // first): exactly where the run stopped "rolling" before stick existed.
+  bool stick_may_enter(double t, const StateVector& x, const ContactState& c) {
+    if (!options_.stick || s_.stick_degenerate) return false;
+    if (!(settling_.settled(t) && s_.rest.contact_stagnant(c.in_contact, c.U, c.Omega))) return false;
+    if (s_.rest.at_rest(c.in_contact, c.U, c.Omega, kinetic_energy_(x))) return false;
+    if (sys_.law().has_poles() || LimitSet(sys_.law(), sys_.plane().k, c.N, c.a, c.b).degenerate()) {
+      // No limit set to hold the contact (no interior, or D is not a support function across a
+      // pole of the law): the run goes on as without stick (docs/dynamics.md §5).
+      s_.stick_degenerate = true;
+      return false;
+    }
+    return true;
+  }
+
+  // The projection of the residue of slip and spin (dynamics/body/stick.h) at x: the velocities
+  // jump, the kinetic energy removed is added to the friction work.
+  void project(StateVector& x, const ContactState& c) {
+    StickProblem p;
+    p.mass = sys_.body().mass;
+    p.inertia = sys_.inertia_tensor();
+    p.r = c.point.r;
+    p.gamma = c.gamma;
+    p.omega = angular_velocity(x);
+    p.u = c.u;
+    const StickProjection j = stick_projection(p);
+    velocity(x) += j.dv;
+    angular_velocity(x) += j.domega;
+    slide_work(x) += j.slide_loss;
+    spin_work(x) += j.spin_loss;
+    s_.stick_projection_loss += j.slide_loss + j.spin_loss;
+    ++s_.stick_projections;
+  }
+
+  // Enters stick if the stick wrench at the projected state lies in the law's limit set.
+  bool enter_stick(double t, StateVector& x, const ContactState& c, BodyMode& mode) {
+    StateVector y = x;
+    const long projections = s_.stick_projections;
+    const double loss = s_.stick_projection_loss;
+    project(y, c);
+    BodyMode held = mode;
+    held.stick = true;
+    held.departing = false;
+    const LimitSetTest test = stick_test(y, held, /*quick_reject=*/true);
+    if (!test.inside()) {  // the contact cannot hold: it slips on
+      s_.stick_projections = projections;
+      s_.stick_projection_loss = loss;
+      return false;
+    }
+    x = y;
+    mode = held;
+    warm_ = test.direction;
+    ++s_.stick_entries;
+    if (s_.stick_entries == 1) s_.first_stick_entry = t;
+    stick_since_ = t;
+    energy_at_entry_ = sys_.energy(x);
+    return true;
+  }
+
+  // Between steps in stick: the located exit, the drift projection, the end in rolling.
+  template <class Stop>
+  After stick_step(double t, StateVector& x, const ContactState& c, BodyMode& mode, Stop&& stop) {
+    RunSummary& s = s_;
+    if (pending_exit_) {
+      pending_exit_ = false;
+      s.stick_time += t - stick_since_;
+      ++s.stick_exits;
+      if (s.stick_exits == 1) s.first_stick_exit = t;
+      mode.stick = false;
+      mode.departing = true;
+      mode.departure_alpha = exit_.direction.alpha;
+      mode.departure_beta = exit_.direction.beta;
+      mode.departure_slip = kDepartureFloorFactor * s.rest.slip_speed.value;
+      mode.departure_spin = kDepartureFloorFactor * s.rest.spin.value;
+      return After::jumped;
+    }
+    if (c.U > kStickDriftFactor * s.rest.slip_speed.value || std::abs(c.Omega) > kStickDriftFactor * s.rest.spin.value) {
+      project(x, c);
+      return After::jumped;
+    }
+    const double energy = sys_.energy(x, c);
+    if (!(std::abs(energy - energy_at_entry_) <= kStickEnergyDrift * s.rest.kinetic_energy.value)) {
+      // Not constant: the hold starts again (the integrator's error over a long stick).
+      s.stick_time += t - stick_since_;
+      stick_since_ = t;
+      energy_at_entry_ = energy;
+    }
+    if (options_.stop_when_rolling && t - stick_since_ >= s.stick_hold.value) {
+      stop(Termination::rolling,
+           "the body has rolled without slip and spin (stick) since t = " + message_number(stick_since_) +
+               " s with its energy constant (" + message_number(energy) + " J, kinetic " +
+               message_number(kinetic_energy_(x)) + " J, above run.rest_kinetic_energy = " +
+               message_number(s.rest.kinetic_energy.value) + " J), its friction wrench inside the law's limit set");
+      s.rule = "in stick (entered in settled contact with U < run.rest_slip_speed and |Omega| < run.rest_spin) "
+               "without a break for run.stick_hold_time, the energy within 1e-3 run.rest_kinetic_energy of its "
+               "value at entry";
+      s.thresholds = {s.stick_hold, s.settle.time, s.settle.normal_speed, s.rest.slip_speed, s.rest.spin,
+                      s.rest.kinetic_energy};
+      return After::stopped;
+    }
+    return After::go_on;
+  }
+
+  // The stick wrench at x (in stick) against the law's limit set; margin -inf out of contact.
+  // With quick_reject, a negative margin in the direction of the latest test (one law evaluation)
+  // answers "outside" at once: the entry attempts of a creeping contact cost that much.
+  LimitSetTest stick_test(const StateVector& x, const BodyMode& mode, bool quick_reject = false) {
+    ContactState c;
+    sys_.contact(x, mode, c);
+    LimitSetTest out;
+    out.margin = -std::numeric_limits<double>::infinity();
+    if (!c.in_contact || !(c.N > 0.0) || !(c.a > 0.0)) return out;
+    const LimitSet set(sys_.law(), sys_.plane().k, c.N, c.a, c.b);
+    const Eigen::Vector3d minor = c.gamma.cross(c.major);
+    const Eigen::Vector3d rho = c.friction.F1 * c.e1 + c.friction.F2 * c.gamma.cross(c.e1);
+    const PatchWrench w{rho.dot(c.major), rho.dot(minor), c.friction.M};
+    if (quick_reject) {
+      const double m = set.margin_at(w, warm_);
+      ++s_.limit_set_evaluations;
+      if (!(m >= 0.0)) {
+        out.margin = m;
+        out.direction = warm_;
+        return out;
+      }
+    }
+    out = set.test(w, &warm_);
+    s_.limit_set_evaluations += out.evaluations;
+    return out;
+  }
+
   // Resolves the body's scales and thresholds into the summary; the settling rule.
   static const SettleRule& resolve_settle(const BodyOnPlane& sys, const RunOptions& options, RunSummary& s) {
     s.scales = body_scales(sys.body(), sys.plane());
     s.rest = resolve_rest(options.rest, s.scales);
     s.settle = resolve_settling(options.settle, s.scales);
     s.chatter = resolve_chatter(options.chatter, s.rest, s.scales);
+    s.stick_hold = resolve_stick_hold(options.stick_hold_time, s.scales, s.settle.time.value);
     return s.settle;
   }
   double kinetic_energy_(const StateVector& x) const { return sys_.kinetic_energy(x); }
@@ -126,6 +314,17 @@ class BodyOnPlane::Monitor {
   StateVector abs_scale_;
   bool in_contact_ = false;
   long stagnant_unsettled_ = 0;  // accepted steps in a row in the stagnation region, not settled
+  // Stick.
+  static constexpr double kStickEnergyDrift = 1e-3;  // of run.rest_kinetic_energy: "constant" in the hold rule
+  long creep_steps_ = 0;          // steps in a row in the stagnation region with stick refused
+  double creep_since_ = 0.0;      // s, the first of them
+  double creep_time_ = 0.0;       // s, crept in earlier runs of such steps since the region was entered
+  double t_now_ = 0.0;
+  double stick_since_ = 0.0;      // start of the current stick (or of its hold window)
+  double energy_at_entry_ = 0.0;  // J, at stick_since_
+  SlipDirection warm_;            // the latest minimising direction: the next search starts there
+  bool pending_exit_ = false;     // locate() found an exit: after_step leaves stick
+  LimitSetTest exit_;
 };
 
 RunSummary simulate(const BodyOnPlane& sys, const StateVector& x0, const RunOptions& options, Observer* observer) {

@@ -2,7 +2,8 @@
 // One run of the body: integrates the equations of motion (dynamics/body/equations_of_motion.h) on the
 // integration loop every model shares (dynamics/core/run_loop.h) from t = 0 to an event, reporting
 // samples to an observer, and returns a summary. The loop owns the stepping, sampling and the
-// events every model has; the body adds lift-offs, landings, settling, rest, rolling and stagnation.
+// events every model has; the body adds lift-offs, landings, settling, rest, stick, rolling and
+// stagnation.
 //
 // Steps are free: each is the step GSL's error control chooses towards run.t_end (only the last is
 // cut to land on t_end exactly, and run.max_step caps them); samples on the output grid are taken
@@ -13,11 +14,15 @@
 //   t_end       the end time was reached;
 //   rest        the stagnation region with little kinetic energy, in settled contact
 //               (dynamics/core/rest_event.h, dynamics/core/settling.h);
-//   rolling     the contact stopped slipping and spinning while the body still moves (a sliding
-//               sphere starts to roll; an egg rocks on its pole), in settled contact;
+//   rolling     with run.stick (default): the body rolled in stick (without slip and spin, the
+//               wrench inside the law's limit set, the energy constant) for run.stick_hold_time
+//               without a break; with run.stick = false, or a law whose limit set has no
+//               interior: the contact stopped slipping and spinning while the body still moves (a
+//               sliding sphere starts to roll; an egg rocks on its pole), in settled contact;
 //   stagnation  the contact stayed in the stagnation region for run.max_stagnant_steps steps in a
-//               row while its normal motion had not settled (a bounce reaching U = Omega = 0):
-//               the integrator can only chatter there, and the model has no sticking branch;
+//               row while its normal motion had not settled (a bounce reaching U = Omega = 0), or
+//               in settled contact while stick could not hold it (the wrench outside the law's
+//               limit set): the integrator can only chatter or creep with tiny steps there;
 //   chatter     the slip (or the spin) stayed below its rest threshold while the other did not, with
 //               collapsed steps and repeated reversals, for run.max_chatter_steps steps in a row:
 //               a law discontinuous at U = 0 (or Omega = 0) chatters there (dynamics/core/chatter_watch.h);
@@ -58,6 +63,17 @@ struct RunSummary : RunSummaryOf<StateVector> {
   RestRule rest;                ///< the rest thresholds as applied
   SettleRule settle;            ///< the settling thresholds as applied
   ChatterRule chatter;          ///< the chatter thresholds as applied
+  // Stick (docs/dynamics.md §5 "stick").
+  long stick_entries = 0;       ///< entries into stick
+  long stick_exits = 0;         ///< exits from stick (located: the wrench left the law's limit set)
+  long stick_projections = 0;   ///< projections of the residue of slip and spin (entries and drift)
+  double stick_time = 0.0;      ///< total time in stick, s
+  double first_stick_entry = -1.0;  ///< s; -1: none
+  double first_stick_exit = -1.0;   ///< s (located); -1: none
+  double stick_projection_loss = 0.0;  ///< kinetic energy the projections removed (in W_slide + W_spin), J
+  long limit_set_evaluations = 0;      ///< law evaluations spent on limit-set tests
+  bool stick_degenerate = false;       ///< stick was refused: the law's limit set has no interior
+  Threshold stick_hold;                ///< run.stick_hold_time as applied
 };
 
 /// Integrates from x0 at t = 0. `observer` may be null. Throws std::invalid_argument for invalid

@@ -79,6 +79,17 @@ support::Json summary_json(const Scenario& scenario, const RunSummary& s) {
                           {"kinetic_energy", s.rest.kinetic_energy.value},
                           {"settle_time", s.settle.time.value},
                           {"settle_normal_speed", s.settle.normal_speed.value}};
+  j["stick"] = {{"enabled", scenario.run.stick},
+                {"degenerate_law", s.stick_degenerate},
+                {"entries", s.stick_entries},
+                {"exits", s.stick_exits},
+                {"time_s", s.stick_time},
+                {"first_entry_time", s.first_stick_entry >= 0.0 ? support::Json(s.first_stick_entry) : support::Json(nullptr)},
+                {"first_exit_time", s.first_stick_exit >= 0.0 ? support::Json(s.first_stick_exit) : support::Json(nullptr)},
+                {"projections", s.stick_projections},
+                {"projection_loss", s.stick_projection_loss},
+                {"limit_set_evaluations", s.limit_set_evaluations},
+                {"hold_time", s.stick_hold.value}};
   return j;
 }
 

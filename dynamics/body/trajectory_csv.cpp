@@ -26,7 +26,8 @@ std::array<double, kTrajectoryColumns.size()> trajectory_row(const Sample& s) {
       c.friction.F1, c.friction.F2, c.friction.M,
       c.a, c.b, c.psi.radians(),
       s.energy, s.kinetic, slide_work(s.x), spin_work(s.x),
-      c.in_contact ? 1.0 : 0.0};
+      c.in_contact ? 1.0 : 0.0,
+      s.mode.stick ? 1.0 : 0.0};
   for (double& x : row) x = support::without_negative_zero(x);
   return row;
 }

@@ -19,6 +19,8 @@
 //   W_slide    J      work done against sliding friction so far, ∫ F1 U dt
 //   W_spin     J      work done against spinning friction so far, ∫ M Omega dt
 //   in_contact 0/1    eps < 0
+//   stick      0/1    the body's mode (docs/dynamics.md §5): 1 in stick (rolling without slip and
+//                     spin; F1, F2, M are then the stick wrench, not the law's)
 //
 // Numbers are written in the shortest form that reads back to the same double; a zero is written
 // "0" whatever its sign (support/number_format.h: the sign of a zero here is arithmetic residue,
@@ -43,10 +45,10 @@
 
 namespace frictionlab::dynamics {
 
-inline constexpr std::array<std::string_view, 25> kTrajectoryColumns = {
+inline constexpr std::array<std::string_view, 26> kTrajectoryColumns = {
     "t",  "gamma1", "gamma2", "gamma3", "omega1", "omega2", "omega3",  "v1",     "v2",
     "v3", "eps",    "N",      "U",      "Omega",  "F1",     "F2",      "M",      "a",
-    "b",  "psi",    "energy", "kinetic", "W_slide", "W_spin", "in_contact"};
+    "b",  "psi",    "energy", "kinetic", "W_slide", "W_spin", "in_contact", "stick"};
 
 /// One row: the values of kTrajectoryColumns at sample `s` (in_contact as 0 or 1), as the CSV reads
 /// back (-0.0 as +0.0). The CSV writes these numbers; other sinks (the Python module's arrays) take

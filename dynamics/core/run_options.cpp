@@ -32,6 +32,8 @@ void RunOptions::validate() const {
                             " s < run.t_end = " + message_number(t_end) + " s");
   if (max_stagnant_steps < 0)
     throw invalid_value("run.max_stagnant_steps", static_cast<long long>(max_stagnant_steps), "it must be >= 0 (0: never)");
+  if (stick_hold_time && !(std::isfinite(*stick_hold_time) && *stick_hold_time > 0.0))
+    throw invalid_value("run.stick_hold_time", *stick_hold_time, "it must be finite and > 0 s");
   chatter.validate();
   rest.validate();
   settle.validate();

@@ -3,6 +3,7 @@
 // ended (docs/dynamics.md §5). The integration loop is dynamics/run_loop.h.
 
 #include <atomic>
+#include <optional>
 #include <string_view>
 
 #include "dynamics/core/chatter_watch.h"
@@ -30,6 +31,15 @@ struct RunOptions {
   RestThresholds rest;
   SettleThresholds settle;
   bool stop_when_rolling = true;  ///< stop with reason "rolling" (dynamics/core/rest_event.h)
+  /// run.stick: a contact that stops slipping and spinning (in settled contact, with more kinetic
+  /// energy than rest) enters the body's stick mode and rolls without slip and spin for as long as
+  /// the law's limit set holds the wrench that needs (docs/dynamics.md §5 "stick"); false: the run
+  /// stops there with reason "rolling" as before stick existed (or chatters on, with
+  /// stop_when_rolling = false).
+  bool stick = true;
+  /// run.stick_hold_time, s, > 0: a run in stick ends "rolling" (stop_when_rolling) once stick has
+  /// held that long; unset: the default of dynamics/core/stick_rule.h (scaled to the body).
+  std::optional<double> stick_hold_time;
   /// >= 0 (0: never): accepted steps in a row in the stagnation region, in contact but not settled,
   /// before the run stops with reason "stagnation". A bounce that merely passes through the region
   /// (a vertical drop without slip or spin stays in it during every impact, where the friction is

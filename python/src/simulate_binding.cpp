@@ -107,7 +107,7 @@ py::tuple run(const std::optional<std::string>& path, const std::string& text, c
   for (std::size_t i = 0; i < kColumns; ++i) {
     const py::str name(dynamics::kTrajectoryColumns[i].data(), dynamics::kTrajectoryColumns[i].size());
     py::array_t<double> column = to_array(std::move(columns[i]));
-    if (dynamics::kTrajectoryColumns[i] == "in_contact") {
+    if (dynamics::kTrajectoryColumns[i] == "in_contact" || dynamics::kTrajectoryColumns[i] == "stick") {
       trajectory[name] = column.attr("astype")("bool");
     } else {
       trajectory[name] = std::move(column);
@@ -126,7 +126,7 @@ void bind_simulate(py::module_& m) {
 Internal: frictionlab.simulate() calls it. Reads the scenario file `path` (or parses the TOML
 `text`, named `source`), applies the "key=value" overrides, runs it into `out_dir` exactly as
 `frictionlab simulate` does, and returns the trajectory columns (dict of float64 arrays,
-in_contact bool) and the exception that stopped the run (KeyboardInterrupt, or one raised by
+in_contact and stick bool) and the exception that stopped the run (KeyboardInterrupt, or one raised by
 `progress(t, t_end)`), or None. `interval` (s of wall time) is how often signals are checked
 and progress is called.)doc");
   m.def(

@@ -165,7 +165,7 @@ void expect_whole_rows(const std::string& csv) {
   std::istringstream lines(csv);
   int n = 0;
   for (std::string line; std::getline(lines, line); ++n)
-    ASSERT_EQ(std::count(line.begin(), line.end(), ','), 24) << "row " << n << ": " << line;
+    ASSERT_EQ(std::count(line.begin(), line.end(), ','), 25) << "row " << n << ": " << line;
 }
 
 bool has_temporary_files(const std::filesystem::path& dir) {

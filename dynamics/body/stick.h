@@ -1,0 +1,67 @@
+#pragma once
+// Stick of a rigid body on the plane: the friction wrench that keeps the contact from slipping and
+// spinning (rolling without slip and without spin; docs/dynamics.md §5 "stick", docs/model.md).
+//
+// Body frame, centre of mass at the origin, any symmetric positive definite inertia J (3x3) and
+// any contact point r. The friction wrench is a tangential force F (F.gamma = 0) at r and a torque
+// -M gamma. With the accelerations the other forces give, a_v and a_w (gravity, the normal force,
+// the gyroscopic terms: the free right-hand side without friction),
+//     v' = a_v + F/m,      omega' = a_w + J^-1 (r x F - M gamma).
+// The contact point's velocity u = v + omega x r has no tangential part and the spin
+// Omega = omega.gamma is 0 at all times iff, with gamma' = gamma x omega (eq. (4)) and r' the rate
+// of the contact point (r' = dr/dgamma gamma', dr/dgamma = -(R1 d1 d1^T + R2 d2 d2^T) on the
+// tangent plane: principal radii R_i along d_i),
+//     P (v' + omega' x r + omega x r') = (u.gamma) gamma',        gamma.omega' = 0,
+// P = I - gamma gamma^T the projection on the contact plane (the normal motion stays free: the
+// Hertz contact is compliant). Both conditions are linear in (F, M): a 3x3 solve with the
+// Delassus matrix W (symmetric positive definite up to the sign of M), the response of
+// (tangential acceleration of the contact point, spin acceleration) to unit wrenches.
+//
+// The same matrix gives the impulse that removes a small slip and spin at once (the projection on
+// entry to stick): the kinetic energy falls by (1/2) c^T W^-1 c >= 0, c = (slip, spin), and the
+// impulse's work is split into the slide part -(1/2) P.u_t and the spin part (1/2) L Omega.
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+namespace frictionlab::dynamics {
+
+/// What the stick solve needs about the body at one state (SI, body frame).
+struct StickProblem {
+  double mass = 0.0;                 ///< kg
+  Eigen::Matrix3d inertia;           ///< J about the centre of mass, kg m^2 (any SPD tensor)
+  Eigen::Vector3d r;                 ///< contact point from the centre of mass, m
+  Eigen::Vector3d r_rate;            ///< r' (the contact point's motion over the surface), m/s
+  Eigen::Vector3d gamma;             ///< upward unit vertical
+  Eigen::Vector3d omega;             ///< angular velocity, 1/s
+  Eigen::Vector3d u;                 ///< velocity of the contact point, m/s
+  Eigen::Vector3d accel_free;        ///< a_v: v' without friction, m/s^2
+  Eigen::Vector3d angular_accel_free;  ///< a_w: omega' without friction, 1/s^2
+};
+
+/// A friction wrench: force on the body (tangential, N) and the torque -M gamma (N m).
+struct StickWrench {
+  Eigen::Vector3d force = Eigen::Vector3d::Zero();
+  double M = 0.0;
+};
+
+/// The wrench that keeps slip and spin at zero (see the header comment).
+[[nodiscard]] StickWrench stick_wrench(const StickProblem& p);
+
+/// r' = dr/dgamma gamma' for principal radii R1 along the unit tangent d1 and R2 along gamma x d1
+/// (m), gamma' = gamma x omega.
+[[nodiscard]] Eigen::Vector3d contact_point_rate(const Eigen::Vector3d& gamma, const Eigen::Vector3d& omega,
+                                                 double R1, const Eigen::Vector3d& d1, double R2);
+
+/// The impulse that makes the slip and the spin zero at once (velocities jump, nothing else).
+struct StickProjection {
+  Eigen::Vector3d dv = Eigen::Vector3d::Zero();      ///< velocity change, m/s
+  Eigen::Vector3d domega = Eigen::Vector3d::Zero();  ///< angular velocity change, 1/s
+  double slide_loss = 0.0;  ///< -(1/2) P.u_t, J: work counted against sliding
+  double spin_loss = 0.0;   ///< (1/2) L Omega, J: work counted against spinning
+};
+
+/// For p.mass, p.inertia, p.r, p.gamma, p.omega, p.u (the rest unused).
+[[nodiscard]] StickProjection stick_projection(const StickProblem& p);
+
+}  // namespace frictionlab::dynamics

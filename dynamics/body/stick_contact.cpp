@@ -1,0 +1,69 @@
+// The body's contact in its stick and departing modes (BodyMode, dynamics/body/equations_of_motion.h;
+// docs/dynamics.md §5 "stick"): the free contact without the law's friction, plus the stick wrench
+// (dynamics/body/stick.h) or the law's friction in the direction of the exit.
+#include <algorithm>
+#include <cmath>
+
+#include "dynamics/body/equations_of_motion.h"
+#include "dynamics/body/stick.h"
+
+namespace frictionlab::dynamics {
+
+void BodyOnPlane::contact_in_mode(const StateVector& x, const BodyMode& mode, ContactState& c) const {
+  if (!mode.stick) {
+    contact_state(x, c);
+    // Departing: the slip and the spin are still the residue of stick: the law sees the exit direction.
+    if (!(c.N > 0.0) || c.U >= mode.departure_slip || std::abs(c.Omega) >= mode.departure_spin) return;
+    contact_state(x, c, false);
+    const Eigen::Vector3d minor = c.gamma.cross(c.major);
+    const double ca = std::cos(mode.departure_alpha), sa = std::sin(mode.departure_alpha);
+    const Eigen::Vector3d e1 = ca * c.major + sa * minor;
+    const double beta = mode.departure_beta;
+    const bool pole = std::abs(beta) >= 0.5 * 3.141592653589793;
+    const double U = pole ? 0.0 : std::cos(beta);
+    const double Omega = beta == 0.0 ? 0.0 : (pole ? std::copysign(1.0, beta) : std::sin(beta)) / c.a;
+    // psi from e1 to the major axis, -alpha, folded to sin psi >= 0 (the major axis is a line).
+    double cp = ca, sp = -sa;
+    if (sp < 0.0 || (sp == 0.0 && cp < 0.0)) {
+      cp = -cp;
+      sp = -sp;
+    }
+    c.e1 = e1;
+    c.psi = friction::PatchAngle::from_direction(cp, sp + 0.0);
+    add_friction(c, e1, law_.evaluate({U, Omega, c.a, c.b, c.psi, c.N, plane_.k}));
+    return;
+  }
+  contact_state(x, c, false);
+  if (!(c.N > 0.0)) return;  // out of contact nothing holds the body; the monitor leaves stick
+  StateVector free;
+  derivatives(x, c, free);
+  StickProblem p;
+  p.mass = body_.mass;
+  p.inertia = inertia_tensor();
+  p.r = c.point.r;
+  const double R_major = std::max(c.point.R_meridian, c.point.R_parallel);
+  const double R_minor = std::min(c.point.R_meridian, c.point.R_parallel);
+  p.omega = angular_velocity(x);
+  p.r_rate = contact_point_rate(c.gamma, p.omega, R_major, c.major, R_minor);
+  p.gamma = c.gamma;
+  p.u = c.u;
+  p.accel_free = velocity(free);
+  p.angular_accel_free = angular_velocity(free);
+  const StickWrench w = stick_wrench(p);
+  // The wrench in the law's terms, in the frame of zero slip (e1 the major axis, psi = 0): the slip
+  // in stick is the integrator's residue, whose direction is rounding noise (out of the contact
+  // plane even, where the contact point moves along the normal). F = -F1 e1 - F2 e2; F1 U + M Omega
+  // stays the power of that residue to first order (~0).
+  c.e1 = c.major;
+  c.psi = friction::PatchAngle();
+  const Eigen::Vector3d e2 = c.gamma.cross(c.e1);
+  friction::FrictionForces f;
+  f.F1 = -w.force.dot(c.e1);
+  f.F2 = -w.force.dot(e2);
+  f.M = w.M;
+  c.friction = f;
+  c.force += w.force;
+  c.torque += c.point.r.cross(w.force) - w.M * c.gamma;
+}
+
+}  // namespace frictionlab::dynamics

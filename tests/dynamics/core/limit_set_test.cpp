@@ -1,0 +1,110 @@
+// The law's limit set (dynamics/core/limit_set.h) against closed forms: the decoupled law's
+// cylinder |F| <= kN, |M| <= M0 (its margin is the distance to the cylinder's surface), the exact
+// law's support at pure slip (kN) and pure spin ((3 pi/16) kNa on a circle, (3/8) E(e) kNa on an
+// ellipse), and points on the exact circle's boundary from the closed forms of F1 and M.
+#include "dynamics/core/limit_set.h"
+
+#include <gtest/gtest.h>
+
+#include <boost/math/special_functions/ellint_2.hpp>
+#include <cmath>
+#include <memory>
+#include <numbers>
+
+#include "friction/registry.h"
+
+namespace frictionlab::dynamics {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+constexpr double k = 0.3;
+constexpr double N = 20.0;   // N
+constexpr double a = 2e-3;   // m
+constexpr double kN = k * N;
+// The margin of a closed-form law is found to rounding at a direction the search hits exactly
+// (the kink lines) and to ~1e-16 elsewhere; 1e-12 of kN leaves room for the grid's rounding.
+constexpr double kMarginTolerance = 1e-12;
+// Where a margin comes from a smooth minimum found by the search: the direction to ~1e-9 rad.
+constexpr double kSearchTolerance = 1e-10;
+
+std::unique_ptr<friction::FrictionLaw> law(const char* spec) { return friction::make_law(spec); }
+
+TEST(DynLimitSet, DecoupledIsTheCylinderAndItsMarginTheDistanceToItsSurface) {
+  const auto decoupled = law("decoupled");
+  const double M0 = 3.0 * kPi / 16.0 * kN * a;  // circle
+  const LimitSet set(*decoupled, k, N, a, a);
+  ASSERT_FALSE(set.degenerate());
+  // Inside: margin = min(1 - |F|/kN, (M0 - |M|)/(kN a)) (normalised distance to the surface).
+  const double f = 0.6, m = 0.8;
+  const LimitSetTest in = set.test({f * kN * std::cos(0.4), f * kN * std::sin(0.4), -m * M0});
+  EXPECT_NEAR(in.margin, std::min(1.0 - f, (1.0 - m) * M0 / (kN * a)), kMarginTolerance);
+  EXPECT_TRUE(in.inside());
+  // Just outside the mantle and just outside the lids.
+  EXPECT_FALSE(set.test({1.001 * kN, 0.0, 0.0}).inside());
+  EXPECT_NEAR(set.test({1.001 * kN, 0.0, 0.0}).margin, -0.001, kMarginTolerance);
+  EXPECT_FALSE(set.test({0.0, 0.0, 1.001 * M0}).inside());
+  EXPECT_FALSE(set.test({0.0, 0.0, -1.001 * M0}).inside());
+  EXPECT_TRUE(set.test({0.0, 0.999 * kN, 0.999 * M0}).inside());  // near the corner, inside
+  // Outside at a corner: the distance to the rim circle, in normalised units.
+  const double df = 0.003, dm = 0.004;
+  const LimitSetTest corner = set.test({(1.0 + df) * kN, 0.0, M0 + dm * kN * a});
+  EXPECT_NEAR(corner.margin, -std::hypot(df, dm), kSearchTolerance);
+}
+
+TEST(DynLimitSet, ExactSupportIsKNAtPureSlipAndThePureSpinMomentAtPureSpin) {
+  const auto exact = law("exact");
+  const double mu = 0.5;
+  const LimitSet circle(*exact, k, N, a, a);
+  const LimitSet ellipse(*exact, k, N, a, mu * a);
+  for (const double alpha : {0.0, 0.7, 2.0, 4.0}) {
+    EXPECT_NEAR(circle.support({alpha, 0.0}), 1.0, 1e-12);
+    EXPECT_NEAR(ellipse.support({alpha, 0.0}), 1.0, 1e-12);
+  }
+  const double circle_spin = 3.0 * kPi / 16.0;
+  const double ellipse_spin = 3.0 / 8.0 * boost::math::ellint_2(std::sqrt(1.0 - mu * mu));
+  for (const double beta : {0.5 * kPi, -0.5 * kPi}) {
+    EXPECT_NEAR(circle.support({0.0, beta}), circle_spin, 1e-9);
+    EXPECT_NEAR(ellipse.support({1.0, beta}), ellipse_spin, 1e-9);
+  }
+  // Membership along the axes of the wrench space.
+  EXPECT_TRUE(circle.test({0.999 * kN, 0.0, 0.0}).inside());
+  EXPECT_FALSE(circle.test({1.001 * kN, 0.0, 0.0}).inside());
+  EXPECT_TRUE(circle.test({0.0, 0.0, 0.999 * circle_spin * kN * a}).inside());
+  EXPECT_FALSE(circle.test({0.0, 0.0, -1.001 * circle_spin * kN * a}).inside());
+  EXPECT_TRUE(ellipse.test({0.0, 0.0, 0.999 * ellipse_spin * kN * a}).inside());
+  EXPECT_FALSE(ellipse.test({0.0, 0.0, 1.001 * ellipse_spin * kN * a}).inside());
+}
+
+TEST(DynLimitSet, ExactCircleBoundaryIsTheClosedFormWrenchOfEachSlipRatio) {
+  // Circle, Hertz pressure, u = U/(a |Omega|) <= 1 (docs/model.md): per kN and kNa,
+  // F1 = (3 pi/32) u (4 - u^2), |M| = (3 pi/128)(8 - 8 u^2 + 3 u^4). Those wrenches lie on the
+  // boundary: scaled by 1 - 1e-6 they are inside (margin > 0), by 1 + 1e-6 outside; a point on the
+  // cylinder's corner (|F| = 0.9 kN, |M| = 0.9 of the pure-spin moment) lies outside the exact set.
+  const auto exact = law("exact");
+  const LimitSet set(*exact, k, N, a, a);
+  for (const double u : {0.25, 0.5, 0.9}) {
+    const double F1 = 3.0 * kPi / 32.0 * u * (4.0 - u * u) * kN;
+    const double M = 3.0 * kPi / 128.0 * (8.0 - 8.0 * u * u + 3.0 * std::pow(u, 4)) * kN * a;
+    EXPECT_TRUE(set.test({(1.0 - 1e-6) * F1, 0.0, (1.0 - 1e-6) * M}).inside()) << "u = " << u;
+    EXPECT_FALSE(set.test({(1.0 + 1e-6) * F1, 0.0, (1.0 + 1e-6) * M}).inside()) << "u = " << u;
+    // The minimising direction of a boundary point is its own direction: tan beta = 1/u.
+    const LimitSetTest on = set.test({F1, 0.0, M});
+    EXPECT_NEAR(on.margin, 0.0, 1e-9) << "u = " << u;
+    EXPECT_NEAR(on.direction.beta, std::atan(1.0 / u), 1e-4) << "u = " << u;
+  }
+  EXPECT_FALSE(set.test({0.9 * kN, 0.0, 0.9 * 3.0 * kPi / 16.0 * kN * a}).inside());
+}
+
+TEST(DynLimitSet, ASetWithoutInteriorIsDegenerateAndHoldsNothing) {
+  const auto no_spin = law("decoupled:r_spin=0");
+  const LimitSet flat(*no_spin, k, N, a, a);
+  EXPECT_TRUE(flat.degenerate());
+  EXPECT_FALSE(flat.test({0.0, 0.0, 0.0}).inside());
+  const auto exact = law("exact");
+  EXPECT_TRUE(LimitSet(*exact, 0.0, N, a, a).degenerate());  // k = 0
+  EXPECT_TRUE(LimitSet(*exact, k, 0.0, a, a).degenerate());  // N = 0
+  EXPECT_FALSE(LimitSet(*exact, k, N, a, a).degenerate());
+}
+
+}  // namespace
+}  // namespace frictionlab::dynamics
