@@ -19,6 +19,9 @@
 //   W_slide    J      work done against sliding friction so far, ∫ F1 U dt
 //   W_spin     J      work done against spinning friction so far, ∫ M Omega dt
 //   in_contact 0/1    eps < 0
+//   x, y       m      position of the centre of mass on the plane (world axes; the pose,
+//                     dynamics/body/state.h: integrated beside the state, not fed back)
+//   qw, qx, qy, qz -  orientation, the unit quaternion turning body vectors into world ones
 //
 // Numbers are written in the shortest form that reads back to the same double; a zero is written
 // "0" whatever its sign (support/number_format.h: the sign of a zero here is arithmetic residue,
@@ -43,12 +46,13 @@
 
 namespace frictionlab::dynamics {
 
-inline constexpr std::array<std::string_view, 25> kTrajectoryColumns = {
-    "t",  "gamma1", "gamma2", "gamma3", "omega1", "omega2", "omega3",  "v1",     "v2",
-    "v3", "eps",    "N",      "U",      "Omega",  "F1",     "F2",      "M",      "a",
-    "b",  "psi",    "energy", "kinetic", "W_slide", "W_spin", "in_contact"};
+inline constexpr std::array<std::string_view, 31> kTrajectoryColumns = {
+    "t",  "gamma1", "gamma2", "gamma3", "omega1", "omega2",  "omega3",  "v1",     "v2",
+    "v3", "eps",    "N",      "U",      "Omega",  "F1",      "F2",      "M",      "a",
+    "b",  "psi",    "energy", "kinetic", "W_slide", "W_spin", "in_contact", "x",  "y",
+    "qw", "qx",     "qy",     "qz"};
 
-/// One row: the values of kTrajectoryColumns at sample `s` (in_contact as 0 or 1), as the CSV reads
+/// One row: the values of kTrajectoryColumns at sample `s` (in_contact as 0 or 1, the quaternion normalised), as the CSV reads
 /// back (-0.0 as +0.0). The CSV writes these numbers; other sinks (the Python module's arrays) take
 /// them from here too, so they hold what the file holds, bit for bit.
 [[nodiscard]] std::array<double, kTrajectoryColumns.size()> trajectory_row(const Sample& s);
