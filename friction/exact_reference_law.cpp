@@ -38,7 +38,7 @@ constexpr std::size_t kWorkspaceIntervals = 2000;
 // h 4^k from it, h its distance from the chord, and no closer than kFinestBreak r_max (a transition
 // that sharp is a jump to rounding). Without them GSL stopped on round-off (error estimates up to
 // 2e-9) or reported "singularity" for rays within 1e-8 .. 1e-15 of an ICR inside the patch and
-// near its rim or on its major axis (issue 19 item 11).
+// near its rim or on its major axis (found by fuzzing, 2026-11).
 constexpr double kFinestBreak = 1e-15;
 constexpr double kGradeRatio = 4.0;
 // Grading starts where the near-singularity is this close to the chord (relative to r_max).

@@ -27,7 +27,7 @@
 // 9.3e-15. On 6,000 inputs fuzzed towards the rim and the axes (b/a = 0.01 to 0.5, every pressure)
 // no GSL failure, and within 6.1e-13 of `exact` except where `exact:pressure=uniform` itself is off
 // (the ICR within ~1e-5 of the tip of a slender patch). Until 2026-11-28, without the graded breaks,
-// GSL failed on 95 of 8,400 such inputs (issue 19 item 11). Below b/a = 0.01
+// GSL failed on 95 of 8,400 such inputs. Below b/a = 0.01
 // GSL stops on round-off near the major axis (b/a ~ 1e-3 gave errors of 2e-10, b/a ~ 1e-6 wrong
 // values of 0.4 with GSL reporting success, b/a ~ 1e-9 GSL failures), so smaller ratios are
 // rejected with std::invalid_argument naming the value and the rule.

@@ -180,27 +180,24 @@ def test_unwritable_output_folder_raises_frictionlab_output_error(cli, scenarios
     assert str(e.value) == cli_error(cli, "simulate", scenario, "--out", not_a_folder)
 
 
-# (g) exact-reference's quadrature failing is a domain error (ValueError), with the command's line.
-# Contacts where GSL gives up (found by a seeded random search of b/a in [0.01, 1], psi near the
-# axes): the minor axis almost along the slip, b/a ~ 0.02-0.03, the ICR inside the patch. Should
-# the law learn to compute them, this test must get other failing contacts or go.
-GSL_FAILURES = [
-    ("exact-reference:pressure=uniform", dict(U=0.5400813556914278, Omega=1.0, a=1.0, b=0.021242991236321916,
-                                              psi=1.5707963267948977, N=1.0, k=1.0)),
-    ("exact-reference", dict(U=0.6945084934457286, Omega=1.0, a=1.0, b=0.033648011196891085,
-                             psi=1.5707963267949756, N=1.0, k=1.0)),
+# (g) exact-reference's quadrature failing would be a domain error (ValueError, with the command's
+# line: python/src/broadcast.cpp maps std::domain_error like std::invalid_argument). The contacts
+# where GSL gave up when that was written (a seeded random search of b/a in [0.01, 1], psi near the
+# axes: the minor axis almost along the slip, the ICR inside the patch) are computed since the
+# quadrature was graded about the ICR (docs/exact-law.md §4), and no failing contact is known
+# (13,000 inputs fuzzed towards the rim and the axes, 2026-11-28): they now give what `exact`
+# gives, within the two laws' stated accuracies (1e-10 and 1e-13 of kN and kNa).
+ONCE_GSL_FAILURES = [
+    ("uniform", dict(U=0.5400813556914278, Omega=1.0, a=1.0, b=0.021242991236321916,
+                     psi=1.5707963267948977, N=1.0, k=1.0)),
+    ("hertz", dict(U=0.6945084934457286, Omega=1.0, a=1.0, b=0.033648011196891085,
+                   psi=1.5707963267949756, N=1.0, k=1.0)),
 ]
 
 
-@pytest.mark.parametrize("spec, contact", GSL_FAILURES)
-def test_exact_reference_quadrature_failure_is_a_value_error_with_the_command_lines_message(cli, spec, contact):
-    options = [x for name, value in contact.items() for x in (f"--{name}", repr(value))]
-    message = cli_error(cli, "friction", "--law", spec, *options)
-    assert "GSL integration failed" in message
-    law = frictionlab.Law(spec)
-    with pytest.raises(ValueError) as e:
-        law(**contact)
-    assert str(e.value) == message
-    with pytest.raises(ValueError) as e:  # an array names the element, as for any bad element
-        law(**{**contact, "U": np.array([0.0, contact["U"]])})
-    assert str(e.value) == "element [1]: " + message
+@pytest.mark.parametrize("pressure, contact", ONCE_GSL_FAILURES)
+def test_exact_reference_computes_the_contacts_where_its_quadrature_once_failed(cli, pressure, contact):
+    reference = frictionlab.Law(f"exact-reference:pressure={pressure}")(**contact)
+    exact = frictionlab.Law(f"exact:pressure={pressure}")(**contact)
+    for r, e in zip(reference, exact):
+        assert abs(r - e) <= 2e-10, (pressure, reference, exact)

@@ -7,7 +7,7 @@
 // (the method of the Hertz table, exact_law_table_test.cpp); it shares no quadrature with either
 // law. Its points run from b/a = 0.01 down to 1e-12 (uniform) and 1e-3 to 1e-12 (punch), over the
 // ICR inside, 1e-9 on either side of the rim, just outside, at rho = sqrt 2, 4, 1e3, s = 1e4 and
-// s = 1e-8, psi on and near the axes, both signs of Omega, and the two inputs of issue 19 item 10
+// s = 1e-8, psi on and near the axes, both signs of Omega, and the two fuzzed inputs of docs/pressure-models.md §3
 // (the uniform law once gave F1 = 1.00008 kN and F1 < 0 there).
 //
 // Tolerances, per kN for F1 and F2 and per kNa for M: the table's own error is below 1e-30;

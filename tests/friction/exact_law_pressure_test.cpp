@@ -263,8 +263,8 @@ TEST(ExactPressure, ForceNeverPointsAlongTheSlip) {
   // F1 >= 0 for every centrally symmetric pressure: the points rho and -rho carry the same
   // pressure and slide with v = U e1 +- Omega J rho =: v1, v2, and with U e1 = (v1 + v2)/2,
   // (v1/|v1| + v2/|v2|).(v1 + v2) = (|v1| + |v2|)(1 + cos(v1, v2)) >= 0. Fuzzed over every axis
-  // ratio the law accepts, slow to fast slip, psi near the axes, and the two inputs of issue 19
-  // item 10 (the uniform law gave F1 = -1.6e-4 kN at the second, slip ratio 4e-8, b/a = 1e-12).
+  // ratio the law accepts, slow to fast slip, psi near the axes, and the two fuzzed inputs of
+  // docs/pressure-models.md §3 (the uniform law gave F1 = -1.6e-4 kN at the second, slip ratio 4e-8, b/a = 1e-12).
   std::mt19937_64 rng(1910);
   std::uniform_real_distribution<double> uni(0.0, 1.0);
   std::vector<ContactInput> inputs = {unit(255094.52174620156, 1.0025254830532505e-12, -2.4426969214284204),

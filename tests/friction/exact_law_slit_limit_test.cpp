@@ -96,7 +96,7 @@ TEST(ExactSlitLimit, EveryPressureMatchesTheSlitLimit) {
 TEST(ExactSlitLimit, FastSlipOfASlitIsTheExpansion) {
   // docs/pressure-models.md §2 with the slit's d3 = cos^2 psi + mu^2 sin^2 psi, d4 = (1 - mu^2)
   // sin 2 psi: F1 = 1 - m2 d3/(2 s^2), F2 = m2 d4/(2 s^2), M = m2 d3/s, with neglected terms
-  // O(s^-4) and O(s^-3) (below 1e-17 here). s = 255094.52 is the slip ratio of issue 19 item 10,
+  // O(s^-4) and O(s^-3) (below 1e-17 here). s = 255094.52 is the slip ratio of a fuzzed input (docs/pressure-models.md §3),
   // where the uniform law gave F1 = 1.00008 kN.
   for (const Pressure p : kAll) {
     const ExactLaw law(p);

@@ -143,8 +143,8 @@ TEST(ExactReferenceLaw, ExactLawAgreesOnASeededRandomSet) {
 // Inputs where GSL failed ("roundoff error", "singularity or extremely bad function behavior")
 // before the inner integrals were graded about the ray's closest approach to the ICR and the outer
 // one about the rim points where that approach crosses the rim (friction/exact_reference_law.cpp;
-// issue 19 item 11): found by fuzzing (0.3 to 6% of ICRs near the rim or the axes failed, by
-// pressure), b/a = 0.022 the issue's ratio. The ICR inside and outside near the rim, on the
+// 2026-11-28): found by fuzzing (0.3 to 6% of ICRs near the rim or the axes failed, by
+// pressure), b/a = 0.022 the ratio of the first report. The ICR inside and outside near the rim, on the
 // major axis, at the tip and at a vertex of the minor axis.
 struct FailedBefore {
   Pressure pressure;
@@ -188,7 +188,7 @@ TEST(ExactReferenceLaw, EvaluatesIcrsNearTheRimAndOnTheAxes) {
 TEST(ExactReferenceLaw, DependsOnTheSpeedsOnlyThroughTheSlipRatio) {
   // F1/(kN), F2/(kN), M/(kNa) depend only on s = U/(a |Omega|), b/a, psi and sign(Omega): with U
   // and Omega scaled by the same power of two (s keeps its bits) to ~1e67 and ~1e-67, the law
-  // gives what it gives at Omega = 1. Issue 19 item 11 reported a GSL failure at b/a = 0.022 with
+  // gives what it gives at Omega = 1. A fuzzing report gave a GSL failure at b/a = 0.022 with
   // U, Omega ~1e67; it was the same at Omega = 1 (an ICR near the rim: EvaluatesIcrsNearTheRim...).
   const double scales[] = {std::ldexp(1.0, 222), std::ldexp(1.0, -222), std::ldexp(1.0, 180)};
   for (const FailedBefore& p : {kFailedBefore[0], kFailedBefore[2], kFailedBefore[4]}) {

@@ -43,8 +43,9 @@ if(STEP STREQUAL "install")
     message(FATAL_ERROR "no frictionlabConfig.cmake under ${prefix}")
   endif()
   get_filename_component(config_dir ${config} DIRECTORY)
-  foreach(f bin/frictionlab include/friction/law.h include/friction/registry.h include/dynamics/simulation.h
-            include/dynamics/scenario.h share/frictionlab/scenarios/sphere-sliding.toml
+  foreach(f bin/frictionlab include/friction/law.h include/friction/registry.h include/dynamics/body/simulation.h
+            include/dynamics/body/scenario.h include/dynamics/core/run_loop.h
+            share/frictionlab/scenarios/sphere-sliding.toml
             share/frictionlab/scenarios/egg-printed-a.toml share/frictionlab/friction-examples.csv
             share/doc/frictionlab/LICENSE)
     if(NOT EXISTS ${prefix}/${f})

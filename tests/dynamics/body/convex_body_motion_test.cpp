@@ -15,7 +15,7 @@
 #include "dynamics/shapes/solid_mass_properties.h"
 #include "dynamics/shapes/toroidal_disk.h"
 #include "friction/registry.h"
-#include "test_support.h"
+#include "tests/dynamics/test_support.h"
 
 namespace frictionlab::dynamics {
 namespace {

@@ -9,7 +9,7 @@
 #include <random>
 
 #include "friction/registry.h"
-#include "test_support.h"
+#include "tests/dynamics/test_support.h"
 
 // Counts heap allocations in this test program (the right-hand side must make none).
 #include "bench/allocation_counter.h"

@@ -6,7 +6,7 @@
 
 #include "dynamics/body/simulation.h"
 #include "friction/registry.h"
-#include "test_support.h"
+#include "tests/dynamics/test_support.h"
 
 namespace frictionlab::dynamics {
 namespace {

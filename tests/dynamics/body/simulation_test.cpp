@@ -12,7 +12,7 @@
 
 #include "friction/law.h"
 #include "friction/registry.h"
-#include "test_support.h"
+#include "tests/dynamics/test_support.h"
 
 namespace frictionlab::dynamics {
 namespace {

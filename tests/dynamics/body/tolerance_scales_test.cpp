@@ -4,7 +4,7 @@
 
 #include <limits>
 
-#include "test_support.h"
+#include "tests/dynamics/test_support.h"
 
 namespace frictionlab::dynamics {
 namespace {

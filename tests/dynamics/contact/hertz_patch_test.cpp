@@ -14,7 +14,7 @@
 #include "dynamics/body/equations_of_motion.h"
 #include "dynamics/contact/hertz_ellipse.h"
 #include "dynamics/body/simulation.h"
-#include "test_support.h"
+#include "tests/dynamics/test_support.h"
 
 namespace frictionlab::dynamics {
 namespace {

@@ -6,7 +6,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "test_support.h"
+#include "tests/dynamics/test_support.h"
 
 namespace frictionlab::dynamics {
 namespace {

@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
 """Regression pin of the one run loop (dynamics/core/run_loop.h): every shipped scenario, run
 with every law (and, for the bodies, both contact models), must give the trajectory.csv columns
-and summary.json values it gave before the loop was shared by the models (issue 20 §1: "every
-shipped scenario reproduces its trajectory bit for bit across the refactor").
+and summary.json values it gave before the loop was shared by the models: every
+shipped scenario reproduces its trajectory bit for bit across that refactor.
 
 The pinned values (reference/run_loop_pin.csv) were recorded by the frictionlab command built
 from the commit before that refactor, not by the code under test:
@@ -57,7 +57,7 @@ def fnv1a64(texts):
 
 def is_puck(path):
     with open(path) as f:
-        return any(line.split("#")[0].replace(" ", "") == 'model="puck"' for line in f)
+        return any(line.split("#")[0].replace(" ", "").strip() == 'model="puck"' for line in f)
 
 
 def runs(scenario_filter=None):

@@ -2,9 +2,12 @@
 
 #include <gtest/gtest.h>
 
+#include <Eigen/Core>
 #include <atomic>
 #include <string>
 #include <vector>
+
+#include "dynamics/core/run_summary.h"
 
 namespace frictionlab::dynamics {
 namespace {
@@ -17,7 +20,7 @@ struct Stops {
 };
 
 TEST(DynRunStops, MaxStepsStopsAtTheLimitWithItsRuleAndThreshold) {
-  RunSummary s;
+  RunSummaryOf<Eigen::Vector3d> s;  // any model's summary
   Stops stops;
   EXPECT_FALSE(stop_at_step_limits(99, 100, nullptr, s, stops.recorder()));
   EXPECT_TRUE(stops.seen.empty());
@@ -33,7 +36,7 @@ TEST(DynRunStops, MaxStepsStopsAtTheLimitWithItsRuleAndThreshold) {
 }
 
 TEST(DynRunStops, TEndStopsOnceReached) {
-  RunSummary s;
+  RunSummaryOf<Eigen::Vector3d> s;  // any model's summary
   Stops stops;
   EXPECT_FALSE(stop_at_t_end(0.999, 1.0, s, stops.recorder()));
   EXPECT_TRUE(stop_at_t_end(1.0, 1.0, s, stops.recorder()));
@@ -46,7 +49,7 @@ TEST(DynRunStops, TEndStopsOnceReached) {
 }
 
 TEST(DynRunStops, ACancelledJobIsInterrupted) {
-  RunSummary s;
+  RunSummaryOf<Eigen::Vector3d> s;  // any model's summary
   Stops stops;
   std::atomic<bool> cancel{false};
   EXPECT_FALSE(stop_at_step_limits(1, 100, &cancel, s, stops.recorder()));

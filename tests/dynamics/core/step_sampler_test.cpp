@@ -7,7 +7,7 @@
 #include <stdexcept>
 
 #include "dynamics/body/equations_of_motion.h"
-#include "test_support.h"
+#include "tests/dynamics/test_support.h"
 
 namespace frictionlab::dynamics {
 namespace {

@@ -135,14 +135,16 @@ TEST(EnsembleMpi, ABadStudyIsReportedEvenWhenRankZeroIsSlowToPrintIt) {
 // SIGTERM to mpirun (a batch system ending the allocation): mpirun forwards it to the ranks and
 // sends SIGKILL a second later, before a job can finish its step and print its last line; there
 // was no frictionlab line at all. Rank 0 now says at the signal what stopped it, what is kept and
-// how to go on, and --resume finishes the study.
+// how to go on, and --resume finishes the study. Each run takes ~0.2 s of CPU (t_end = 30 s), so
+// that the signal, sent when the first row is written, comes long before the 24th (at t_end = 6 s
+// a quiet machine finished all 24 runs, 36 a second, before mpirun delivered it).
 TEST(EnsembleMpi, SigtermToMpirunSaysWhatIsKeptAndResumeFinishes) {
   if (::access(FRICTIONLAB_MPIEXEC, X_OK) != 0) GTEST_SKIP() << FRICTIONLAB_MPIEXEC << " is absent: nothing to test";
   const fs::path dir = testing::fresh_temp_dir("ensemble_mpi_sigterm");
   fs::create_directories(dir);
   const fs::path study = dir / "study.toml";
   std::ofstream(study) << "scenario = \"" << (fs::path(FRICTIONLAB_SOURCE_DIR) / "data/scenarios/egg-printed-a.toml").string()
-                       << "\"\nlaws = [\"exact\"]\nset = [\"run.t_end=6\", \"run.output_dt=0.01\"]\n"
+                       << "\"\nlaws = [\"exact\"]\nset = [\"run.t_end=30\", \"run.output_dt=0.01\"]\n"
                           "[[vary]]\nkey = \"initial.gamma3\"\nvalues = [0.97, 0.9, 0.8]\n[replicas]\ncount = 8\nsize = 1e-6\n";
   const fs::path out = dir / "out";
   const auto rows = [&] {

@@ -28,7 +28,7 @@ std::string ratio_written(double U, double Omega, Holds holds = {}) {
     c.U = U;
     c.Omega = Omega;
     c.force = {0.0, 0.0};
-    csv.sample(PuckSample{0.0, x, c, 0.0, holds});
+    csv.sample(PuckSample{0.0, x, c, 0.0, 0.0, holds});
     csv.close();
   }
   std::ifstream in(file);

@@ -6,7 +6,7 @@
 #include <random>
 #include <vector>
 
-#include "test_support.h"
+#include "tests/dynamics/test_support.h"
 
 namespace frictionlab::dynamics {
 namespace {

@@ -22,7 +22,7 @@ b/a = 0.01, rim integrals, which share not even the reduction) nor with `exact-r
 b/a >= 0.01 only). With the chord integrals by tanh-sinh instead (as the Hertz table does), the
 first 39 points agreed with these to 1.6e-30 (2026-11-27; mpmath 1.3.0).
 
-Points (`points()`): the two inputs of issue 19 item 10 (uniform, b/a ~ 1e-12, where `exact` once
+Points (`points()`): the two fuzzed inputs of docs/pressure-models.md §3 (uniform, b/a ~ 1e-12, where `exact` once
 gave F1 = 1.00008 and F1 < 0); then, for each pressure, each mu in its list and each psi in 0, 0.4,
 1.2, pi/2 - 5e-9, pi/2 (as doubles), 2.5, two ICR positions by turns from: inside (rho = 0.5),
 1e-9 inside and outside the rim, rho = 1.02, rho = sqrt 2, rho = 4, rho = 1e3, s = 1e4 and
