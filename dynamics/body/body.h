@@ -1,7 +1,7 @@
 #pragma once
 // The rigid body: a convex shape (dynamics/shapes/shape.h, shared and immutable), its mass, its
 // centre of mass anywhere (a point in the shape frame) and its full central inertia tensor J
-// (docs/model.md §5, docs/convex-bodies.md §8). The body frame of the equations of motion is the
+// (docs/model.md §5, docs/convex-bodies.md §9). The body frame of the equations of motion is the
 // shape frame translated to the centre of mass (the same axes): J is a symmetric 3x3 tensor in those
 // axes, J_ij = -∫ xi_i xi_j dm for i != j (dynamics/shapes/solid_mass_properties.h), whose principal
 // axes may be turned against the shape's (a rattleback's are).
@@ -51,7 +51,7 @@ struct Body {
   std::optional<AxisymmetricBody> axisymmetric;
 };
 
-/// What a scenario's [body] section says (docs/dynamics.md §7, docs/convex-bodies.md §8).
+/// What a scenario's [body] section says (docs/dynamics.md §7, docs/convex-bodies.md §10).
 /// Without `shape` (or with shape = "revolution"): a body of revolution from exactly one of
 /// `preset` or `chi2`. With another shape kind: the kind's parameters (shapes/shape_registry.h).
 struct BodySpec {

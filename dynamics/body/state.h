@@ -9,7 +9,7 @@
 // against sliding and against spinning friction, integrated along with the motion so that
 // energy balance E + W_slide + W_spin = E(0) can be checked and the dissipation split reported.
 //
-// The pose rides along (docs/convex-bodies.md §9): position = (X, Y), the centre of mass on the
+// The pose rides along (docs/convex-bodies.md §11): position = (X, Y), the centre of mass on the
 // plane (m, world axes), and orientation = the unit quaternion (w, x, y, z) that turns body-frame
 // vectors into world ones. They are integrated beside the reduced state but never fed back: no
 // force, torque or event reads them, and their absolute tolerance scale is infinite

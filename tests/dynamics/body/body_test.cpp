@@ -91,7 +91,7 @@ TEST(DynBody, ErrorsNameTheKeyAndTheRule) {
 }
 
 // ---------------------------------------------------------------------------------------------
-// Shapes other than today's bodies of revolution (docs/convex-bodies.md §8).
+// Shapes other than today's bodies of revolution (docs/convex-bodies.md §10).
 
 BodySpec ellipsoid(double a1, double a2, double a3, double mass) {
   BodySpec s;
