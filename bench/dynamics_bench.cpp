@@ -13,7 +13,7 @@
 // the contact inputs of those states. BM_rhs_ellipsoid/<law> (and _hertz) is the right-hand side of
 // the triaxial ellipsoid of data/scenarios/ellipsoid-case-a.toml (semi-axes 0.2, 0.17, 0.14 m, 2 kg,
 // homogeneous: the general shape path, dynamics/shapes/ellipsoid.h) on the same 2001 states (the
-// same eps, so the same 1023 in contact): the target is within 1.3x of BM_rhs/<law>
+// same eps, so the same 1023 in contact): the target is within 1.3x of BM_rhs/<law>
 // (docs/benchmarks.md).
 // Ratios are only meaningful within one run.
 

@@ -1,6 +1,7 @@
 #include "dynamics/body/body.h"
 
 #include <cmath>
+#include <span>
 #include <stdexcept>
 #include <string>
 
@@ -76,14 +77,10 @@ bool is_axisymmetric_inertia(const Eigen::Matrix3d& J) {
 
 namespace {
 
-std::string vector_text(const Eigen::Vector3d& v) {
-  return "[" + message_number(v.x()) + ", " + message_number(v.y()) + ", " + message_number(v.z()) + "]";
-}
-
 void require_inside(const shapes::Shape& shape, const Eigen::Vector3d& com) {
   if (!(com.allFinite() && shape.contains(com)))
-    throw std::invalid_argument("body.com = " + vector_text(com) +
-                                " is invalid: the centre of mass must lie inside the body (shape frame, m)");
+    throw invalid_value("body.com", std::span<const double>(com.data(), 3),
+                        "the centre of mass must lie inside the body (shape frame, m)");
 }
 
 // A shape of a registered kind other than a body of revolution.
@@ -96,8 +93,8 @@ Body make_shaped_body(const BodySpec& spec) {
       throw std::invalid_argument(std::string(key) + " is only used by a body of revolution (body.shape = '" + spec.shape +
                                   "'): give the full tensor body.inertia");
   if (spec.com)
-    throw std::invalid_argument("body.com = " + message_number(*spec.com) + " is invalid: for body.shape = '" +
-                                spec.shape + "' the centre of mass is a point [x, y, z] of the shape frame (m)");
+    throw invalid_value("body.com", *spec.com,
+                        "for body.shape = '" + spec.shape + "' the centre of mass is a point [x, y, z] of the shape frame (m)");
   shapes::ShapeSpec shape_spec;
   shape_spec.kind = spec.shape;
   shape_spec.parameters = spec.shape_parameters;

@@ -123,8 +123,8 @@ double max_difference(const Recorder& a, const Recorder& b, double speed, double
 // against the same bodies of revolution (Newton on the profile, dynamics/shapes/contact_geometry.h),
 // with the same mass properties given to both, on the same fixed steps (fixed_steps): the right-hand
 // sides agree to rounding, so the runs differ only by rounding carried through the steps. The
-// issue's bounds: 1e-12 for the sphere (the contact point -R gamma, no orientation) and 1e-9 for
-// the spheroid, over 1 s; each part of the state relative to its scale (the depth to 1e-5 m).
+// bounds asked for: 1e-12 for the sphere (the contact point -R gamma, no orientation) and 1e-9 for
+// the spheroid, over 1 s; each part of the state relative to its scale (the height eps to the body's size).
 constexpr double kSphereAgreement = 1e-12;
 constexpr double kSpheroidAgreement = 1e-9;
 
@@ -197,8 +197,8 @@ TEST(DynConvexBodyMotion, SpheroidAsEllipsoidFollowsTheSpheroidOfRevolution) {
 // ---------------------------------------------------------------------------------------------
 // Without friction the motion conserves E = kinetic + gravity + Hertz's spring energy exactly
 // (with patch = "hertz" only through the orientation torque of dynamics/shapes/hertz_orientation_torque.h).
-// The bound: 1e-9 of m g c (c the smallest semi-axis; the disk's rim radius), at tolerance
-// 1e-12. The ellipsoid over the 10 s (a second of CPU); the disk over 2 s: its 10 s take
+// The bound asked for: 1e-9 of m g c (c the smallest semi-axis; the disk's rim radius), at tolerance
+// 1e-12. The ellipsoid over 10 s (a second of CPU); the disk over 2 s: its 10 s take
 // 27 s of CPU, too long for a test (measured once, 2026-11-28: 2.4e-12 J = 1.6e-9 m g rho =
 // 1.0e-10 m g (R + rho); docs/convex-bodies.md §12).
 constexpr double kFrictionlessEnergyTol = 1e-9;
