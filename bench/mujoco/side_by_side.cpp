@@ -132,8 +132,11 @@ int main(int argc, char** argv) {
     mujoco_side::SphereSpec spec;
     spec.R = R;
     spec.mass = base.body.mass;
-    spec.A = base.body.A;
-    spec.C = base.body.C;
+    if (!base.body.axisymmetric)
+      throw std::invalid_argument("body.inertia is invalid here: the side by side needs the sphere's centre of mass at "
+                                  "its centre and J = diag(A, A, C)");
+    spec.A = base.body.axisymmetric->A;
+    spec.C = base.body.axisymmetric->C;
     spec.g = base.contact.g;
     spec.k = base.contact.k;
     spec.torsional = torsional;

@@ -20,7 +20,8 @@ double body_size(const Profile& profile, double com) {
 
 BodyScales body_scales(const Body& body, const PlaneContact& plane) {
   BodyScales s;
-  s.size = body_size(body.profile, body.com);
+  s.size = body.axisymmetric ? body_size(body.axisymmetric->profile, body.axisymmetric->com)
+                             : body.shape->radius_about(body.centre_of_mass);
   s.mass = body.mass;
   s.gravity = plane.g > 0.0 ? plane.g : kReferenceGravity;
   s.speed = std::sqrt(s.gravity * s.size);

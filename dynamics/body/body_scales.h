@@ -6,7 +6,8 @@
 //
 //   R        the body's size: the largest distance from the centre of mass to the surface,
 //            max over the profile of sqrt(chi(z)^2 + (z - com)^2) (the radius of the smallest
-//            sphere about the centre of mass that holds the body; a sphere about its centre: R);
+//            sphere about the centre of mass that holds the body; a sphere about its centre: R;
+//            for a shape other than today's bodies of revolution, Shape::radius_about(centre of mass));
 //   sqrt(g R)      speed of a fall over the body's size;   sqrt(g/R)  rate of a rocking over it;
 //   m g R          energy of lifting the body by its size;
 //   |eps_s| = (m g / lambda)^(2/3)   the static Hertz compression;

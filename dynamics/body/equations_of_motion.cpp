@@ -3,8 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 #include <utility>
 
+#include "dynamics/contact/hertz_ellipse.h"
+#include "dynamics/shapes/hertz_orientation_torque.h"
 #include "friction/support/number_format.h"
 
 namespace frictionlab::dynamics {
@@ -34,14 +37,69 @@ friction::PatchAngle patch_direction(const Eigen::Vector3d& major, const Eigen::
 }  // namespace
 
 BodyOnPlane::BodyOnPlane(Body body, const PlaneContact& plane, const friction::FrictionLaw& law)
-    : body_(std::move(body)),
-      plane_(plane),
-      law_(law),
-      geometry_(body_.profile, body_.com),
-      inertia_(body_.A, body_.A, body_.C),
-      inv_inertia_(1.0 / body_.A, 1.0 / body_.A, 1.0 / body_.C) {
+    : body_(std::move(body)), plane_(plane), law_(law), J_(body_.inertia) {
+  if (!body_.shape) throw std::invalid_argument("BodyOnPlane: the body has no shape");
   plane_.validate();
   if (plane_.patch == PatchModel::hertz) hertz_.emplace(plane_.E_star);
+  if (body_.axisymmetric) {
+    const AxisymmetricBody& a = *body_.axisymmetric;
+    geometry_.emplace(a.profile, a.com);
+    inertia_ = Eigen::Vector3d(a.A, a.A, a.C);
+    inv_inertia_ = Eigen::Vector3d(1.0 / a.A, 1.0 / a.A, 1.0 / a.C);
+  } else {
+    inertia_ = J_.diagonal();
+    inv_inertia_ = inertia_.cwiseInverse();
+  }
+  diagonal_ = J_(0, 1) == 0.0 && J_(0, 2) == 0.0 && J_(1, 0) == 0.0 && J_(1, 2) == 0.0 && J_(2, 0) == 0.0 &&
+              J_(2, 1) == 0.0;
+  J_inv_ = diagonal_ ? Eigen::Matrix3d(inv_inertia_.asDiagonal()) : Eigen::Matrix3d(J_.inverse());
+  disk_ = dynamic_cast<const shapes::ToroidalDisk*>(body_.shape.get());
+}
+
+std::string BodyOnPlane::point_contact_end(const StateVector& x, const ContactState& c) const {
+  if (!disk_ || !c.in_contact) return {};
+  const double depth = -height(x);
+  const double clearance = disk_->face_clearance(c.gamma);
+  if (depth < clearance) return {};
+  using support::message_number;
+  return "the face of the toroidal disk reaches the plane: penetration depth " + message_number(depth) +
+         " m >= face clearance " + message_number(clearance) + " m at gamma3 = " + message_number(c.gamma.z()) +
+         " (the disk lies down; its rim's point contact, the model's, ends here)";
+}
+
+const ContactGeometry& BodyOnPlane::geometry() const {
+  if (!geometry_) throw std::logic_error("BodyOnPlane::geometry(): the body is not an axisymmetric body of revolution");
+  return *geometry_;
+}
+
+void BodyOnPlane::shape_contact(const Eigen::Vector3d& gamma, double eps, ContactState& c, PatchShape& patch,
+                                Eigen::Vector3d& hertz_torque) const {
+  const shapes::SurfaceContact sc = body_.shape->contact(gamma);
+  c.point.z = sc.r.z();
+  c.point.r = sc.r - body_.centre_of_mass;
+  c.point.R_meridian = sc.R_major;
+  c.point.R_parallel = sc.R_minor;
+  patch.major = sc.major;
+  patch.circle = sc.R_major - sc.R_minor <= shapes::kUmbilicRelTol * sc.R_major;
+  if (!(eps < 0.0)) {  // out of contact: no patch, no force
+    patch.a = patch.b = 0.0;
+    c.N = 0.0;
+    return;
+  }
+  const double delta = -eps;
+  if (!hertz_) {  // the section hypothesis: the Dupin indicatrix at depth |eps|
+    c.N = plane_.normal_force(eps);
+    patch.a = std::sqrt(2.0 * delta * sc.R_major);
+    patch.b = patch.circle ? patch.a : std::sqrt(2.0 * delta * sc.R_minor);
+    return;
+  }
+  const HertzEllipse e = hertz_ellipse(sc.R_major, sc.R_minor);
+  const double stiffness = hertz_->modulus() * e.stiffness_per_modulus;
+  c.N = stiffness * delta * std::sqrt(delta);
+  patch.a = std::sqrt(e.a2_per_depth * delta);
+  patch.b = patch.circle ? patch.a : e.mu * patch.a;
+  hertz_torque = shapes::hertz_orientation_torque(
+      gamma, delta, stiffness, shapes::log_stiffness_gradient(sc, body_.shape->radii_gradient(gamma, sc), e));
 }
 
 void BodyOnPlane::contact_state(const StateVector& x, ContactState& c, bool with_friction) const {
@@ -53,23 +111,27 @@ void BodyOnPlane::contact_state(const StateVector& x, ContactState& c, bool with
   const Eigen::Vector3d w = angular_velocity(x);
   const double eps = height(x);
 
-  c.point = geometry_.contact_point(c.gamma);
+  PatchShape patch;
+  Eigen::Vector3d hertz_torque = Eigen::Vector3d::Zero();
+  if (geometry_) {  // today's body of revolution, today's arithmetic
+    c.point = geometry_->contact_point(c.gamma);
+    if (hertz_) {  // [contact] patch = "hertz" (dynamics/contact/hertz_patch.h)
+      const HertzContact h = hertz_->evaluate(*geometry_, c.point, c.gamma, eps);
+      c.N = h.N;
+      patch = h.patch;
+      hertz_torque = h.torque;
+    } else {
+      c.N = plane_.normal_force(eps);
+      patch = ContactGeometry::patch(c.point, c.gamma, eps < 0.0 ? -eps : 0.0);
+    }
+  } else {
+    shape_contact(c.gamma, eps, c, patch, hertz_torque);
+  }
   c.u = v + w.cross(c.point.r);
   const Eigen::Vector3d slip = c.u - c.u.dot(c.gamma) * c.gamma;
   c.U = slip.norm();
   c.Omega = w.dot(c.gamma);
   c.in_contact = eps < 0.0;
-  PatchShape patch;
-  Eigen::Vector3d hertz_torque = Eigen::Vector3d::Zero();
-  if (hertz_) {  // [contact] patch = "hertz" (dynamics/contact/hertz_patch.h)
-    const HertzContact h = hertz_->evaluate(geometry_, c.point, c.gamma, eps);
-    c.N = h.N;
-    patch = h.patch;
-    hertz_torque = h.torque;
-  } else {
-    c.N = plane_.normal_force(eps);
-    patch = ContactGeometry::patch(c.point, c.gamma, c.in_contact ? -eps : 0.0);
-  }
   // Below the smallest normal double the slip direction is noise: treat it as zero slip, e1 = major.
   if (c.U >= std::numeric_limits<double>::min()) {
     c.e1 = slip / c.U;
@@ -110,13 +172,29 @@ void BodyOnPlane::operator()(double /*t*/, const StateVector& x, StateVector& dx
 void BodyOnPlane::derivatives(const StateVector& x, const ContactState& c, StateVector& dxdt) const {
   const Eigen::Vector3d v = velocity(x);
   const Eigen::Vector3d w = angular_velocity(x);
-  const Eigen::Vector3d Jw = inertia_.cwiseProduct(w);
   velocity(dxdt) = -w.cross(v) - plane_.g * c.gamma + c.force / body_.mass;              // Eq. (2)
-  angular_velocity(dxdt) = inv_inertia_.cwiseProduct(c.torque - w.cross(Jw));           // Eq. (3)
+  if (diagonal_) {
+    const Eigen::Vector3d Jw = inertia_.cwiseProduct(w);
+    angular_velocity(dxdt) = inv_inertia_.cwiseProduct(c.torque - w.cross(Jw));         // Eq. (3)
+  } else {
+    const Eigen::Vector3d Jw = J_ * w;
+    angular_velocity(dxdt) = J_inv_ * (c.torque - w.cross(Jw));                         // Eq. (3)
+  }
   vertical(dxdt) = vertical(x).cross(w);                                                // Eq. (4)
   height(dxdt) = c.u.dot(c.gamma);                                                      // Eq. (5)
   slide_work(dxdt) = c.friction.F1 * c.U;
   spin_work(dxdt) = c.friction.M * c.Omega;
+  // The pose, not fed back: q' = q (0, omega)/2; X' = horizontal part of R(q) v.
+  const auto q = orientation(x);
+  orientation(dxdt) << -0.5 * (q[1] * w[0] + q[2] * w[1] + q[3] * w[2]), 0.5 * (q[0] * w[0] + q[2] * w[2] - q[3] * w[1]),
+      0.5 * (q[0] * w[1] + q[3] * w[0] - q[1] * w[2]), 0.5 * (q[0] * w[2] + q[1] * w[1] - q[2] * w[0]);
+  const double qn2 = q.squaredNorm();
+  if (qn2 > 0.0) {
+    const Eigen::Vector3d world_v = Eigen::Quaterniond(q[0], q[1], q[2], q[3]).normalized() * v;
+    position(dxdt) << world_v.x(), world_v.y();
+  } else {
+    position(dxdt).setZero();
+  }
 }
 
 PoleWatch::Point BodyOnPlane::pole_point(const ContactState& c) {
@@ -148,7 +226,7 @@ std::string BodyOnPlane::describe_friction(const StateVector& x, const BodyMode&
 
 double BodyOnPlane::kinetic_energy(const StateVector& x) const {
   const Eigen::Vector3d w = angular_velocity(x);
-  return 0.5 * body_.mass * velocity(x).squaredNorm() + 0.5 * w.dot(inertia_.cwiseProduct(w));
+  return 0.5 * body_.mass * velocity(x).squaredNorm() + 0.5 * w.dot(angular_momentum(w));
 }
 
 double BodyOnPlane::energy(const StateVector& x, const ContactState& c) const {

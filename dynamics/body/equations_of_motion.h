@@ -1,6 +1,7 @@
 #pragma once
 // The equations of motion (2)-(5) of the paper with the dots restored (docs/model.md), in the
-// body frame C xi1 xi2 xi3 (origin at the centre of mass, principal axes, J = diag(A, A, C)):
+// body frame C xi1 xi2 xi3 (origin at the centre of mass, the shape's axes, J the full central
+// inertia tensor of dynamics/body/body.h; diag(A, A, C) for today's bodies of revolution):
 //
 //   Eq. (2)  m (v' + omega x v) = -m g gamma + N gamma + F
 //   Eq. (3)  J omega' + omega x J omega = r x (N gamma + F) - M gamma
@@ -8,6 +9,20 @@
 //   Eq. (5)  eps' = u . gamma,   u = v + omega x r   (velocity of the contact point r)
 //   Eq. (6)  N = lambda |eps|^(3/2) for eps < 0, else 0 (dynamics/contact/hertz_contact.h)
 //   Eq. (7)  F = -F1 e1 - F2 e2, torque -M gamma, from the friction law; none when N = 0.
+//
+// The contact point and the principal radii come from the body's shape (dynamics/shapes/shape.h):
+// the patch by the section hypothesis has the semi-axes sqrt(2 |eps| R_major), sqrt(2 |eps| R_minor)
+// along the shape's `major` direction and the one across it (the Dupin indicatrix); with
+// patch = "hertz" the two radii go to Hertz's ellipse (dynamics/contact/hertz_ellipse.h) and the
+// torque that makes the contact conservative is dynamics/shapes/hertz_orientation_torque.h's.
+// Today's bodies of revolution (Body::axisymmetric) keep today's arithmetic bit for bit: the
+// contact from dynamics/shapes/contact_geometry.h, the Hertz contact from dynamics/contact/hertz_patch.h and
+// J applied component-wise (the same operations in the same order as before shapes existed). A
+// diagonal J (any shape) is applied component-wise too; a full J as a matrix, with its inverse
+// computed once.
+//
+// The pose (dynamics/body/state.h) rides along: X' = (R(q) v)_1,2 and q' = q (0, omega)/2, R(q)
+// the rotation of the normalised quaternion; nothing else reads it.
 //
 // e1 is the direction of u - (u.gamma) gamma (the slip of the contact point), U its magnitude;
 // e2 = gamma x e1; Omega = omega . gamma. When U = 0, e1 is the major axis of the patch (psi = 0),
@@ -32,6 +47,7 @@
 
 #include "dynamics/body/body.h"
 #include "dynamics/shapes/contact_geometry.h"
+#include "dynamics/shapes/toroidal_disk.h"
 #include "dynamics/contact/hertz_contact.h"
 #include "dynamics/contact/hertz_patch.h"
 #include "dynamics/core/observer.h"
@@ -46,7 +62,10 @@ struct ContactState {
   Eigen::Vector3d gamma;   ///< upward unit vertical, body frame
   Eigen::Vector3d major;   ///< major axis of the patch (unit, contact plane): the principal
                            ///< direction of the larger radius of curvature
-  ContactPoint point;      ///< contact point r and principal radii
+  /// Contact point r (from the centre of mass, body frame) and principal radii. For a body that is
+  /// not Body::axisymmetric, R_meridian holds R_major and R_parallel R_minor, and z the shape-frame
+  /// third coordinate of the contact point.
+  ContactPoint point;
   Eigen::Vector3d u;       ///< velocity of the contact point, m/s
   Eigen::Vector3d e1;      ///< slip direction (unit, in the contact plane)
   double U = 0.0;          ///< slip speed |u - (u.gamma) gamma|, m/s
@@ -121,7 +140,7 @@ class BodyOnPlane {
   /// Adds the friction `f` of the law, in the slip frame (e1, gamma x e1), to c's force and torque.
   static void add_friction(ContactState& c, const Eigen::Vector3d& e1, const friction::FrictionForces& f);
   /// The body's inertia tensor J about the centre of mass, kg m^2.
-  [[nodiscard]] Eigen::Matrix3d inertia_tensor() const { return inertia_.asDiagonal(); }
+  [[nodiscard]] Eigen::Matrix3d inertia_tensor() const { return diagonal_ ? Eigen::Matrix3d(inertia_.asDiagonal()) : J_; }
 
   /// Total mechanical energy (J), see the header comment; `c` must be contact_state(x).
   [[nodiscard]] double energy(const StateVector& x, const ContactState& c) const;
@@ -152,16 +171,44 @@ class BodyOnPlane {
   [[nodiscard]] const Body& body() const { return body_; }
   [[nodiscard]] const PlaneContact& plane() const { return plane_; }
   [[nodiscard]] const friction::FrictionLaw& law() const { return law_; }
-  [[nodiscard]] const ContactGeometry& geometry() const { return geometry_; }
+  /// Where the point contact of the shape ends: a toroidal disk whose face reaches the plane
+  /// (penetration depth >= ToroidalDisk::face_clearance(gamma), dynamics/shapes/toroidal_disk.h). A
+  /// message saying so, or empty while the point contact holds. `c` = contact_state(x).
+  [[nodiscard]] std::string point_contact_end(const StateVector& x, const ContactState& c) const;
+  /// The rule point_contact_end() applies, for the summary.
+  static constexpr const char* kFlatFaceRule =
+      "in contact with the penetration depth |eps| >= the face clearance rho (1 - |gamma3|) of the toroidal disk";
+
+  /// Today's contact geometry of a Body::axisymmetric body (std::logic_error for another body).
+  [[nodiscard]] const ContactGeometry& geometry() const;
+  /// The central inertia tensor J (body axes, kg m^2) and its inverse.
+  [[nodiscard]] const Eigen::Matrix3d& inertia() const { return J_; }
+  [[nodiscard]] const Eigen::Matrix3d& inverse_inertia() const { return J_inv_; }
+  /// J omega (kg m^2/s): component-wise for a diagonal J (the bits of today's bodies).
+  [[nodiscard]] Eigen::Vector3d angular_momentum(const Eigen::Vector3d& w) const {
+    return diagonal_ ? Eigen::Vector3d(inertia_.cwiseProduct(w)) : Eigen::Vector3d(J_ * w);
+  }
+  /// J^-1 t (1/s^2 for a torque t in N m): component-wise for a diagonal J.
+  [[nodiscard]] Eigen::Vector3d apply_inverse_inertia(const Eigen::Vector3d& t) const {
+    return diagonal_ ? Eigen::Vector3d(inv_inertia_.cwiseProduct(t)) : Eigen::Vector3d(J_inv_ * t);
+  }
 
  private:
+  // The contact point, patch and normal contact of a body that is not Body::axisymmetric.
+  void shape_contact(const Eigen::Vector3d& gamma, double eps, ContactState& c, PatchShape& patch,
+                     Eigen::Vector3d& hertz_torque) const;
+
   Body body_;
   PlaneContact plane_;
   const friction::FrictionLaw& law_;
-  ContactGeometry geometry_;
+  std::optional<ContactGeometry> geometry_;  ///< set for a Body::axisymmetric body
+  const shapes::ToroidalDisk* disk_ = nullptr;  ///< the shape, when it is a toroidal disk
   std::optional<HertzNormalContact> hertz_;  ///< set when plane.patch = hertz
-  Eigen::Vector3d inertia_;      ///< (A, A, C)
-  Eigen::Vector3d inv_inertia_;  ///< (1/A, 1/A, 1/C)
+  bool diagonal_ = true;         ///< J is diagonal
+  Eigen::Vector3d inertia_;      ///< the diagonal of J, (A, A, C) for a body of revolution
+  Eigen::Vector3d inv_inertia_;  ///< its reciprocals
+  Eigen::Matrix3d J_;
+  Eigen::Matrix3d J_inv_;
 };
 
 /// A sample and an observer of the body's runs (dynamics/core/observer.h).

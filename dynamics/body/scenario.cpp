@@ -27,10 +27,53 @@ using scenario_toml::fail_at;
 using scenario_toml::Section;
 using scenario_toml::section_table;
 
+// body.inertia = [[J11, J12, J13], [J21, J22, J23], [J31, J32, J33]] (kg m^2).
+Eigen::Matrix3d read_inertia(Section& body) {
+  const toml::node& n = body.node("inertia");
+  const auto bad = [&](const std::string& why) {
+    fail_at("body.inertia", "body.inertia must be the full tensor [[J11, J12, J13], [J21, J22, J23], [J31, J32, J33]] "
+                            "(kg m^2, shape axes, J_ij = -integral of xi_i xi_j dm for i != j): " + why);
+  };
+  const toml::array* rows = n.as_array();
+  if (!rows || rows->size() != 3) bad("got " + scenario_toml::shown(n));
+  Eigen::Matrix3d J;
+  for (std::size_t i = 0; i < 3; ++i) {
+    const toml::array* row = rows->get(i)->as_array();
+    if (!row || row->size() != 3) bad("row " + std::to_string(i + 1) + " is " + scenario_toml::shown(*rows->get(i)));
+    for (std::size_t k = 0; k < 3; ++k)
+      J(static_cast<int>(i), static_cast<int>(k)) =
+          Section::as_number(*row->get(k), "body.inertia[" + std::to_string(i) + "][" + std::to_string(k) + "]");
+  }
+  return J;
+}
+
 // Reads [body] as written (the body itself is built from it once, by the caller).
 BodySpec read_body_spec(const toml::table& root) {
   BodySpec spec;
-  Section body(section_table(root, "body", true), "body");
+  const toml::table* table = section_table(root, "body", true);
+  Section body(table, "body");
+  std::string shape = body.string("shape", "");
+  if (shape == "revolution") shape.clear();  // today's keys describe it
+  spec.mass = body.number("mass");
+  if (body.has("com")) {
+    const toml::node& com = body.node("com");
+    if (com.is_array()) spec.com_vector = body.vector3("com");
+    else spec.com = body.number("com");
+  }
+  if (body.has("inertia")) spec.inertia = read_inertia(body);
+  if (!shape.empty()) {
+    // Another shape kind: every other key is one of its parameters (shapes/shape_registry.h checks them).
+    spec.shape = shape;
+    for (const auto& [k, v] : *table) {
+      const std::string key(k.str());
+      if (key == "shape" || key == "mass" || key == "com" || key == "inertia" || key == "A" || key == "C") continue;
+      if (v.is_array()) spec.shape_parameters[key] = body.numbers(key);
+      else spec.shape_parameters[key] = {body.number(key)};
+    }
+    spec.A = body.optional_number("A");
+    spec.C = body.optional_number("C");
+    return spec;
+  }
   if (body.has("profile")) spec.preset = body.string("profile", "");
   if (body.has("chi2")) {
     spec.chi2 = body.numbers("chi2");
@@ -42,11 +85,10 @@ BodySpec read_body_spec(const toml::table& root) {
     if (ax.size() != 2) fail_at("body.semi_axes", "body.semi_axes must be [equatorial, polar], got " + std::to_string(ax.size()) + " values");
     spec.semi_axes = std::array<double, 2>{ax[0], ax[1]};
   }
-  spec.mass = body.number("mass");
-  spec.com = body.optional_number("com");
   spec.A = body.optional_number("A");
   spec.C = body.optional_number("C");
-  body.check_no_unknown_keys({"profile", "chi2", "radius", "semi_axes", "mass", "com", "A", "C"});
+  body.check_no_unknown_keys(
+      {"shape", "profile", "chi2", "radius", "semi_axes", "mass", "com", "A", "C", "inertia"});
   return spec;
 }
 
@@ -66,7 +108,7 @@ Scenario build(const toml::table& root, const std::string& source, const std::ve
   const std::string description = top.string("description", "");
   if (top.has("model") && scenario_toml::model_of(root) != "body")
     fail_at("model", "model = \"" + scenario_toml::model_of(root) +
-                         "\": this scenario is not a body of revolution (run it with frictionlab simulate)");
+                         "\": this scenario is not a body on the plane (run it with frictionlab simulate)");
   for (const char* sec : {"body", "contact", "initial", "run"}) (void)top.has(sec);
   top.check_no_unknown_keys({"name", "description", "model", "[body]", "[contact]", "[initial]", "[run]"});
 
@@ -130,7 +172,15 @@ Scenario build(const toml::table& root, const std::string& source, const std::ve
   for (const auto& [what, value] : {std::pair{"initial.omega", s.initial.omega}, std::pair{"initial.v", s.initial.v}})
     if (!value.allFinite()) fail_at(what, std::string(what) + " must be finite");
   if (!std::isfinite(s.initial.eps)) fail_at("initial.eps", "initial.eps must be finite");
-  init.check_no_unknown_keys({"gamma", "omega", "v", "eps"});
+  // The pose at t = 0 (dynamics/body/state.h): on the plane, and the heading about the vertical.
+  if (init.has("position")) {
+    const std::vector<double> p = init.numbers("position", 2);
+    s.initial.position = Eigen::Vector2d(p[0], p[1]);
+    if (!s.initial.position.allFinite()) fail_at("initial.position", "initial.position must be finite");
+  }
+  s.initial.heading = init.number("heading", 0.0);
+  if (!std::isfinite(s.initial.heading)) fail_at("initial.heading", "initial.heading must be finite");
+  init.check_no_unknown_keys({"gamma", "omega", "v", "eps", "position", "heading"});
   check_initial(s.initial.v, s.initial.omega, s.initial.eps, extent);
 
   // [run]
@@ -198,7 +248,10 @@ Scenario load_scenario(const std::filesystem::path& file, const std::vector<std:
 }
 
 StateVector initial_state(const Scenario& s) {
-  return make_state(s.initial.v, s.initial.omega, s.initial.gamma, s.initial.eps);
+  StateVector x = make_state(s.initial.v, s.initial.omega, s.initial.gamma, s.initial.eps);
+  position(x) = s.initial.position;
+  orientation(x) = orientation_from(s.initial.gamma, s.initial.heading);
+  return x;
 }
 
 }  // namespace frictionlab::dynamics

@@ -30,6 +30,11 @@ struct InitialState {
   Eigen::Vector3d omega = Eigen::Vector3d::Zero();   ///< angular velocity, 1/s
   Eigen::Vector3d v = Eigen::Vector3d::Zero();       ///< velocity of the centre of mass, m/s
   double eps = 0.0;                                  ///< contact height, m ("static": -(mg/lambda)^(2/3))
+  /// The pose at t = 0 (not fed back, dynamics/body/state.h): the centre of mass on the plane (m,
+  /// world axes) and the heading (rad): the body is tilted so that gamma is up by the shortest
+  /// turn, then turned by `heading` about the vertical.
+  Eigen::Vector2d position = Eigen::Vector2d::Zero();
+  double heading = 0.0;
 };
 
 struct Scenario {

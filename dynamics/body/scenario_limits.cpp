@@ -2,9 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <span>
+#include <stdexcept>
 #include <string>
 
+#include "dynamics/shapes/solid_mass_properties.h"
 #include "friction/support/errors.h"
 #include "friction/support/number_format.h"
 
@@ -33,14 +36,53 @@ support::InvalidValue invalid_size(const BodySpec& spec, const std::string& rule
 
 double BodyExtent::smallest() const { return std::min(length, 2.0 * rho_max); }
 
+namespace {
+
+// The smallest width of a convex shape, min over directions n of h(n) + h(-n) (h the support
+// function: h(-gamma) = -r(gamma).gamma), over a Fibonacci set of directions and the shape's axes
+// turned by a small angle (a flat face, where contact() has no point, lies across an axis).
+// An upper bound that is close enough for the limits (a few per cent).
+double smallest_width(const shapes::Shape& shape) {
+  constexpr int kDirections = 2000;
+  constexpr double kAxisTilt = 1e-4;
+  double best = std::numeric_limits<double>::infinity();
+  const auto width = [&](const Eigen::Vector3d& n) {
+    try {
+      const Eigen::Vector3d u = n.normalized();
+      best = std::min(best, -shape.contact(u).r.dot(u) - shape.contact(-u).r.dot(-u));
+    } catch (const std::domain_error&) {
+      // no point contact in this direction (a flat face): the tilted axes cover it
+    }
+  };
+  for (int i = 0; i < 3; ++i) {
+    Eigen::Vector3d n = Eigen::Vector3d::Unit(i);
+    n[(i + 1) % 3] = kAxisTilt;
+    width(n);
+  }
+  const double golden = M_PI * (3.0 - std::sqrt(5.0));
+  for (int i = 0; i < kDirections; ++i) {
+    const double z = 1.0 - (2.0 * i + 1.0) / kDirections;
+    const double rho = std::sqrt((1.0 - z) * (1.0 + z));
+    width(Eigen::Vector3d(rho * std::cos(golden * i), rho * std::sin(golden * i), z));
+  }
+  return best;
+}
+
+}  // namespace
+
 BodyExtent extent_of(const Body& body) {
+  if (!body.axisymmetric) {
+    const double width = smallest_width(*body.shape);
+    return BodyExtent{width, body.shape->size(), body.shape->radius_about(body.centre_of_mass)};
+  }
   // r^2 = (z - com)^2 + P(z) is smooth on [z_lo, z_hi]; 1024 intervals resolve its maximum far
   // below the precision the limits need.
   constexpr int kSamples = 1024;
-  BodyExtent e{body.profile.length(), body.profile.max_radius(), 0.0};
+  const AxisymmetricBody& a = *body.axisymmetric;
+  BodyExtent e{a.profile.length(), a.profile.max_radius(), 0.0};
   for (int i = 0; i <= kSamples; ++i) {
-    const double z = body.profile.z_lo() + body.profile.length() * i / kSamples;
-    const double r2 = (z - body.com) * (z - body.com) + std::max(0.0, body.profile.chi2()(z));
+    const double z = a.profile.z_lo() + a.profile.length() * i / kSamples;
+    const double r2 = (z - a.com) * (z - a.com) + std::max(0.0, a.profile.chi2()(z));
     e.r_max = std::max(e.r_max, std::sqrt(r2));
   }
   return e;
@@ -60,6 +102,25 @@ void check_body_spec(const BodySpec& spec) {
 }
 
 void check_body(const BodySpec& spec, const Body& body, const BodyExtent& e) {
+  if (!body.axisymmetric) {
+    if (!within(e.length, Limits::kMinSize, Limits::kMaxSize) || !within(2.0 * e.rho_max, Limits::kMinSize, Limits::kMaxSize))
+      throw support::invalid_value(
+          spec.shape.empty() ? "body.profile" : "body.shape", std::string_view(spec.shape.empty() ? spec.preset : spec.shape),
+          "the body's smallest width (" + support::message_number(e.length) + " m) and its largest diameter (" +
+              support::message_number(2.0 * e.rho_max) + " m) must be within [" +
+              support::message_number(Limits::kMinSize) + ", " + support::message_number(Limits::kMaxSize) + "] m");
+    const double top = body.mass * e.r_max * e.r_max;
+    const Eigen::Vector3d moments = shapes::principal_inertia(body.inertia).moments;
+    for (const double I : moments)
+      if (!within(I, Limits::kMinInertiaFraction * top, top))
+        throw support::invalid_value("body.inertia", I,
+                                     "each principal moment must be within [" +
+                                         support::message_number(Limits::kMinInertiaFraction * top) + ", " +
+                                         support::message_number(top) +
+                                         "] kg m^2 (up to m r_max^2: the mass lies inside the body, r_max = " +
+                                         support::message_number(e.r_max) + " m)");
+    return;
+  }
   for (const double size : {e.length, 2.0 * e.rho_max})
     if (!within(size, Limits::kMinSize, Limits::kMaxSize))
       throw invalid_size(spec, "the body's length along its axis (" + support::message_number(e.length) +
@@ -74,8 +135,8 @@ void check_body(const BodySpec& spec, const Body& body, const BodyExtent& e) {
                                        "^2: the mass lies inside the body, " + r_name + " = " +
                                        support::message_number(r) + " m)");
   };
-  check_inertia("body.A", body.A, e.r_max, "r_max");
-  check_inertia("body.C", body.C, e.rho_max, "rho_max");
+  check_inertia("body.A", body.axisymmetric->A, e.r_max, "r_max");
+  check_inertia("body.C", body.axisymmetric->C, e.rho_max, "rho_max");
 }
 
 void check_contact(const PlaneContact& c, const Body& body, const BodyExtent& e) {

@@ -40,10 +40,11 @@ struct ScenarioLimits {
   static constexpr double kMaxSpeed = 1e3;
 };
 
-/// The body's extent, from its profile (sampled like Profile::max_radius).
+/// The body's extent, from its profile (sampled like Profile::max_radius); for a body that is not
+/// Body::axisymmetric, from its shape: `length` its smallest width, `rho_max` Shape::size().
 struct BodyExtent {
-  double length = 0.0;   ///< along the axis, m
-  double rho_max = 0.0;  ///< largest radius, m
+  double length = 0.0;   ///< along the axis, m (the smallest width of another shape)
+  double rho_max = 0.0;  ///< largest radius, m (another shape: its size)
   double r_max = 0.0;    ///< distance from the centre of mass to the farthest surface point, m
   /// min(length, largest diameter), m.
   [[nodiscard]] double smallest() const;

@@ -69,6 +69,11 @@ class BodyOnPlane::Monitor {
                    Sampler& /*sampler*/, Stop&& stop) {
     RunSummary& s = s_;
     t_now_ = t;
+    if (std::string face = sys_.point_contact_end(x, c); !face.empty()) {  // the shape's point contact ends
+      stop(Termination::flat_face, std::move(face));
+      s.rule = BodyOnPlane::kFlatFaceRule;
+      return After::stopped;
+    }
     if (c.in_contact != in_contact_) (c.in_contact ? s.landings : s.liftoffs) += 1;
     in_contact_ = c.in_contact;
     s.min_normal_force = std::min(s.min_normal_force, c.N);

@@ -34,6 +34,8 @@
 //   law-error   the friction law rejected its input (message attached);
 //   integrator-failure  GSL gave up (message attached);
 //   max-steps   run.max_steps accepted steps were taken;
+//   flat-face   a toroidal disk's face reached the plane (BodyOnPlane::point_contact_end): the
+//               point contact of its rim, the model's, ends there;
 //   interrupted the caller's cancel flag was raised (Ctrl-C on the command line);
 //   output-error / output-limit  the observer's sample() threw OutputFailure / OutputLimitReached
 //               (dynamics/core/observer.h): the run stops at once.

@@ -46,15 +46,35 @@ support::Json summary_json(const Scenario& scenario, const RunSummary& s) {
                       {"omega", vec3(angular_velocity(x))},
                       {"v", vec3(velocity(x))},
                       {"eps", height(x)}};
-  j["body"] = {{"profile", scenario.body_spec.preset.empty() ? std::string("chi2") : scenario.body_spec.preset},
-               {"chi2", body.profile.chi2().coefficients()},
-               {"z_lo", body.profile.z_lo()},
-               {"z_hi", body.profile.z_hi()},
-               {"mass", body.mass},
-               {"com", body.com},
-               {"A", body.A},
-               {"C", body.C},
-               {"homogeneous_centroid", body.homogeneous.centroid}};
+  // The final pose (dynamics/body/state.h): not fed back, carried beside the state.
+  const Eigen::Quaterniond q = orientation_quaternion(x);
+  j["final_state"]["position"] = support::Json::array({position(x)[0], position(x)[1]});
+  j["final_state"]["orientation"] = support::Json::array({q.w(), q.x(), q.y(), q.z()});
+  if (body.axisymmetric) {
+    const AxisymmetricBody& a = *body.axisymmetric;
+    j["body"] = {{"profile", scenario.body_spec.preset.empty() ? std::string("chi2") : scenario.body_spec.preset},
+                 {"chi2", a.profile.chi2().coefficients()},
+                 {"z_lo", a.profile.z_lo()},
+                 {"z_hi", a.profile.z_hi()},
+                 {"mass", body.mass},
+                 {"com", a.com},
+                 {"A", a.A},
+                 {"C", a.C},
+                 {"homogeneous_centroid", a.homogeneous.centroid}};
+  } else {
+    j["body"] = {{"mass", body.mass}, {"homogeneous_centroid", vec3(body.homogeneous.centroid)}};
+  }
+  j["body"]["shape"] = std::string(body.shape->kind());
+  if (!scenario.body_spec.shape_parameters.empty()) {
+    support::Json parameters = support::Json::object();
+    for (const auto& [name, values] : scenario.body_spec.shape_parameters)
+      parameters[name] = values.size() == 1 ? support::Json(values.front()) : support::Json(values);
+    j["body"]["parameters"] = parameters;
+  }
+  j["body"]["centre_of_mass"] = vec3(body.centre_of_mass);
+  support::Json inertia = support::Json::array();
+  for (int i = 0; i < 3; ++i) inertia.push_back(vec3(body.inertia.row(i).transpose()));
+  j["body"]["inertia"] = inertia;
   j["contact"] = {{"k", scenario.contact.k}, {"lambda", scenario.contact.lambda}, {"g", scenario.contact.g}};
   j["contact"]["patch"] = scenario.contact.patch == PatchModel::hertz ? "hertz" : "section";
   if (scenario.contact.patch == PatchModel::hertz) j["contact"]["E_star"] = scenario.contact.E_star;

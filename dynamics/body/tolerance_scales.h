@@ -9,6 +9,8 @@
 //   eps (m)      |eps_s|, the static Hertz compression (so the error in N = lambda |eps|^1.5
 //                is about 1.5 abs_tol of the weight)
 //   W_slide, W_spin (J)  m g R
+//   position, orientation  infinite: the pose is carried beside the state, not fed back
+//                (dynamics/body/state.h), and does not take part in the error control
 
 #include "dynamics/body/body_scales.h"
 #include "dynamics/body/state.h"

@@ -4,19 +4,11 @@
 #include "friction/support/number_format.h"
 
 namespace frictionlab::dynamics {
-namespace {
-
-void put(std::string& line, double x) {
-  support::append_shortest(line, x);
-  line.push_back(',');
-}
-
-}  // namespace
-
 std::array<double, kTrajectoryColumns.size()> trajectory_row(const Sample& s) {
   const ContactState& c = s.contact;
   const Eigen::Vector3d omega = angular_velocity(s.x);
   const Eigen::Vector3d v = velocity(s.x);
+  const Eigen::Quaterniond q = orientation_quaternion(s.x);
   std::array<double, kTrajectoryColumns.size()> row = {
       s.t,
       c.gamma[0], c.gamma[1], c.gamma[2],
@@ -27,7 +19,9 @@ std::array<double, kTrajectoryColumns.size()> trajectory_row(const Sample& s) {
       c.a, c.b, c.psi.radians(),
       s.energy, s.kinetic, slide_work(s.x), spin_work(s.x),
       c.in_contact ? 1.0 : 0.0,
-      s.mode.stick ? 1.0 : 0.0};
+      s.mode.stick ? 1.0 : 0.0,
+      position(s.x)[0], position(s.x)[1],
+      q.w(), q.x(), q.y(), q.z()};
   for (double& x : row) x = support::without_negative_zero(x);
   return row;
 }
@@ -55,8 +49,17 @@ TrajectoryCsv::TrajectoryCsv(const std::filesystem::path& file, std::uint64_t ma
 void TrajectoryCsv::sample(const Sample& s) {
   const auto row = trajectory_row(s);
   line_.clear();
-  for (std::size_t i = 0; i + 1 < row.size(); ++i) put(line_, row[i]);
-  line_ += row.back() != 0.0 ? "1\n" : "0\n";
+  constexpr std::size_t kInContact = 24;  // kTrajectoryColumns[24] == "in_contact"
+  static_assert(kTrajectoryColumns[kInContact] == "in_contact");
+  for (std::size_t i = 0; i < row.size(); ++i) {
+    if (i == kInContact) {
+      line_ += row[i] != 0.0 ? "1" : "0";
+      line_.push_back(i + 1 < row.size() ? ',' : '\n');
+      continue;
+    }
+    support::append_shortest(line_, row[i]);
+    line_.push_back(i + 1 < row.size() ? ',' : '\n');
+  }
   try {
     file_.append(line_);
   } catch (const support::OutputError& e) {

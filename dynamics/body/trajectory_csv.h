@@ -21,6 +21,9 @@
 //   in_contact 0/1    eps < 0
 //   stick      0/1    the body's mode (docs/dynamics.md §5): 1 in stick (rolling without slip and
 //                     spin; F1, F2, M are then the stick wrench, not the law's)
+//   x, y       m      position of the centre of mass on the plane (world axes; the pose,
+//                     dynamics/body/state.h: integrated beside the state, not fed back)
+//   qw, qx, qy, qz -  orientation, the unit quaternion turning body vectors into world ones
 //
 // Numbers are written in the shortest form that reads back to the same double; a zero is written
 // "0" whatever its sign (support/number_format.h: the sign of a zero here is arithmetic residue,
@@ -45,12 +48,13 @@
 
 namespace frictionlab::dynamics {
 
-inline constexpr std::array<std::string_view, 26> kTrajectoryColumns = {
-    "t",  "gamma1", "gamma2", "gamma3", "omega1", "omega2", "omega3",  "v1",     "v2",
-    "v3", "eps",    "N",      "U",      "Omega",  "F1",     "F2",      "M",      "a",
-    "b",  "psi",    "energy", "kinetic", "W_slide", "W_spin", "in_contact", "stick"};
+inline constexpr std::array<std::string_view, 32> kTrajectoryColumns = {
+    "t",  "gamma1", "gamma2", "gamma3", "omega1", "omega2",  "omega3",  "v1",     "v2",
+    "v3", "eps",    "N",      "U",      "Omega",  "F1",      "F2",      "M",      "a",
+    "b",  "psi",    "energy", "kinetic", "W_slide", "W_spin", "in_contact", "stick", "x",
+    "y",  "qw",     "qx",     "qy",     "qz"};
 
-/// One row: the values of kTrajectoryColumns at sample `s` (in_contact as 0 or 1), as the CSV reads
+/// One row: the values of kTrajectoryColumns at sample `s` (in_contact as 0 or 1, the quaternion normalised), as the CSV reads
 /// back (-0.0 as +0.0). The CSV writes these numbers; other sinks (the Python module's arrays) take
 /// them from here too, so they hold what the file holds, bit for bit.
 [[nodiscard]] std::array<double, kTrajectoryColumns.size()> trajectory_row(const Sample& s);

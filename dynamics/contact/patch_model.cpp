@@ -2,6 +2,8 @@
 
 #include <cmath>
 #include <limits>
+#include <optional>
+#include <stdexcept>
 #include <string>
 
 #include "dynamics/shapes/contact_geometry.h"
@@ -43,7 +45,21 @@ void apply_patch_model(const PatchModelSpec& spec, const Body& body, PlaneContac
   if (!(g3 >= -1.0 && g3 <= 1.0))
     throw support::invalid_value("contact.lambda_gamma3", g3,
                                  "it is the third component of the upward vertical: it must lie in [-1, 1]");
-  const ContactGeometry geometry(body.profile, body.com);
+  // Hertz's stiffness per unit modulus where the upward vertical has third component g3: today's
+  // arithmetic for a body of revolution; for another shape with gamma in the shape's xi1-xi3 plane.
+  std::optional<ContactGeometry> geometry;
+  if (body.axisymmetric) geometry.emplace(body.axisymmetric->profile, body.axisymmetric->com);
+  const auto stiffness_at = [&](double E_star) {
+    if (geometry) return HertzNormalContact(E_star).stiffness(*geometry, g3);
+    try {
+      const shapes::SurfaceContact c = body.shape->contact({std::sqrt((1.0 - g3) * (1.0 + g3)), 0.0, g3});
+      return E_star * hertz_ellipse(c.R_major, c.R_minor).stiffness_per_modulus;
+    } catch (const std::domain_error& e) {
+      throw support::invalid_value("contact.lambda_gamma3", g3,
+                                   std::string("the shape has no point contact there (") + e.what() +
+                                       "): give a tilted reference orientation");
+    }
+  };
   if (any_elastic) {
     if (spec.lambda)
       throw support::InvalidValue("contact.lambda",
@@ -52,13 +68,14 @@ void apply_patch_model(const PatchModelSpec& spec, const Body& body, PlaneContac
     for (const auto& [key, value] : elastic)
       if (!value->has_value()) required(key, " when any of contact.E1, nu1, E2, nu2 is given");
     contact.E_star = effective_modulus(*spec.E1, *spec.nu1, *spec.E2, *spec.nu2);
-    contact.lambda = HertzNormalContact(contact.E_star).stiffness(geometry, g3);
+    contact.lambda = stiffness_at(contact.E_star);
     return;
   }
   if (!spec.lambda) required("contact.lambda", " (or the elastic constants contact.E1, nu1, E2, nu2)");
   contact.lambda = *spec.lambda;
   contact.E_star = std::isfinite(contact.lambda) && contact.lambda > 0.0
-                       ? modulus_matching_stiffness(geometry, contact.lambda, g3)
+                       ? (geometry ? modulus_matching_stiffness(*geometry, contact.lambda, g3)
+                                   : contact.lambda / stiffness_at(1.0))
                        : std::numeric_limits<double>::quiet_NaN();
 }
 

@@ -54,6 +54,7 @@ std::string_view to_string(Termination t) {
     case Termination::interrupted: return "interrupted";
     case Termination::output_error: return "output-error";
     case Termination::output_limit: return "output-limit";
+    case Termination::flat_face: return "flat-face";
   }
   return "unknown";
 }

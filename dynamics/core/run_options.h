@@ -70,11 +70,12 @@ enum class Termination {
   max_steps,
   interrupted,
   output_error,
-  output_limit
+  output_limit,
+  flat_face
 };
 
 /// "t_end", "rest", "rolling", "stagnation", "chatter", "law-pole", "non-finite", "law-error", "integrator-failure",
-/// "max-steps", "interrupted", "output-error", "output-limit".
+/// "max-steps", "interrupted", "output-error", "output-limit", "flat-face".
 [[nodiscard]] std::string_view to_string(Termination t);
 
 }  // namespace frictionlab::dynamics

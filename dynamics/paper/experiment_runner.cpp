@@ -32,7 +32,9 @@ void take_scenario_facts(RunResult& r) {
   r.weight = scenario.body.mass * scenario.contact.g;
   r.t_end = scenario.run.t_end;
   const Body& body = scenario.body;
-  r.low_pole = body.com - body.profile.z_lo() <= body.profile.z_hi() - body.com ? 1 : -1;
+  // The paper's bodies are bodies of revolution; another shape has no poles to name (1).
+  const std::optional<AxisymmetricBody>& a = body.axisymmetric;
+  r.low_pole = !a || a->com - a->profile.z_lo() <= a->profile.z_hi() - a->com ? 1 : -1;
 }
 
 // features.json: the features, their thresholds, and how trajectory.csv was thinned.

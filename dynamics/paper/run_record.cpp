@@ -162,7 +162,7 @@ ComparisonSeries read_comparison_series(const std::filesystem::path& path) {
 }
 
 std::optional<Termination> termination_named(std::string_view name) {
-  for (int i = 0; i <= static_cast<int>(Termination::output_limit); ++i) {
+  for (int i = 0; i <= static_cast<int>(Termination::flat_face); ++i) {
     const auto t = static_cast<Termination>(i);
     if (to_string(t) == name) return t;
   }

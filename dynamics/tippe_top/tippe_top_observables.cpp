@@ -19,7 +19,9 @@ double gamma3(const StateVector& x) {
 
 double jellett_quantity(const Body& body, const StateVector& x, const ContactState& c) {
   const auto w = angular_velocity(x);
-  const Eigen::Vector3d L(body.A * w[0], body.A * w[1], body.C * w[2]);
+  const Eigen::Vector3d L = body.axisymmetric ? Eigen::Vector3d(body.axisymmetric->A * w[0], body.axisymmetric->A * w[1],
+                                                                 body.axisymmetric->C * w[2])
+                                               : Eigen::Vector3d(body.inertia * w);
   return L.dot(c.point.r);
 }
 

@@ -36,6 +36,8 @@ def assert_same_trajectory(result, csv_columns):
     ("sphere-sliding.toml", []),
     ("egg-printed-a.toml", ["run.t_end=0.5"]),
     ("egg-homogeneous-b.toml", ["run.t_end=0.3", "contact.law=pade-printed-minor"]),
+    ("ellipsoid-case-a.toml", ["run.t_end=0.2"]),
+    ("disk-rolling-circle.toml", ["run.t_end=0.2", "contact.patch=hertz", "contact.lambda_gamma3=0"]),
 ])
 def test_simulate_equals_the_command_line_bit_for_bit(cli, scenarios, tmp_path, scenario, sets):
     path = os.path.join(scenarios, scenario)
@@ -178,3 +180,18 @@ def test_deeply_nested_input_raises_value_error_not_a_crash(scenarios, tmp_path)
         frictionlab.simulate(path, overrides={"run.x": nested_list})
     with pytest.raises(ValueError, match=rule):
         frictionlab.simulate(path, overrides=[dotted + "=1"])
+
+
+@pytest.mark.parametrize("scenario", ["ellipsoid-case-a.toml", "ellipsoid-long-axis.toml", "disk-rolling-circle.toml",
+                                      "disk-spin-to-rest.toml"])
+def test_convex_scenarios_run(scenarios, scenario):
+    """The shipped shapes other than bodies of revolution run from Python, with their pose."""
+    result = frictionlab.simulate(os.path.join(scenarios, scenario), overrides={"run.t_end": 0.1})
+    assert result.summary["termination"]["reason"] == "t_end"
+    assert result.summary["body"]["shape"] in ("ellipsoid", "toroidal-disk")
+    q = np.stack([result.trajectory[c] for c in ("qw", "qx", "qy", "qz")])
+    np.testing.assert_allclose(np.linalg.norm(q, axis=0), 1.0, rtol=0, atol=1e-15)
+    assert len(result.summary["final_state"]["position"]) == 2
+    # The centre of mass moves on the plane as its world velocity says (x' = (R(q) v)_x): a rolling
+    # disk covers ground, the others at most drift.
+    assert np.all(np.isfinite(result.trajectory["x"]))

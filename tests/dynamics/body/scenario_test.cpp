@@ -74,9 +74,9 @@ TEST(DynScenario, CarriesItsBuiltBody) {
   const Scenario s = parse_scenario(kGood, "test.toml");
   constexpr double kMass = 1.0, kRadius = 0.05;
   EXPECT_EQ(s.body.mass, kMass);
-  EXPECT_NEAR(s.body.A, 0.4 * kMass * kRadius * kRadius, 1e-15);  // solid sphere: 2/5 m R^2
-  EXPECT_NEAR(s.body.C, 0.4 * kMass * kRadius * kRadius, 1e-15);
-  EXPECT_NEAR(s.body.profile.z_hi() - s.body.profile.z_lo(), 2.0 * kRadius, 1e-15);
+  EXPECT_NEAR(s.body.axisymmetric->A, 0.4 * kMass * kRadius * kRadius, 1e-15);  // solid sphere: 2/5 m R^2
+  EXPECT_NEAR(s.body.axisymmetric->C, 0.4 * kMass * kRadius * kRadius, 1e-15);
+  EXPECT_NEAR(s.body.axisymmetric->profile.z_hi() - s.body.axisymmetric->profile.z_lo(), 2.0 * kRadius, 1e-15);
 }
 
 // A file is parsed once; each run resolves its own overrides from the parsed document.
@@ -297,16 +297,16 @@ TEST(DynScenario, TheTrajectoryByteLimitHasItsStatedDefaultAndIsOverridable) {
 
 // A plan that would write more than the limit even at one character per value is refused before
 // anything runs, naming the key, the file and the limit: 3 s at 3.3e-7 s is 9.1e6 rows of at
-// least 2 bytes per column (50 bytes), 450 MB > 100 MB.
+// least 2 bytes per column (62 bytes for the 31 columns), 564 MB > 100 MB.
 TEST(DynScenario, AnOutputIntervalWhosePlanPassesTheByteLimitIsRefused) {
   const std::string e = error_of(kGood, {"run.t_end=3", "run.output_dt=3.3e-7"});
   EXPECT_EQ(e.rfind("--set run.output_dt=3.3e-7: run.output_dt = 3.3e-07 is invalid", 0), 0u) << e;
-  for (const char* word : {"trajectory.csv", "run.max_output_bytes = 100000000", "50 bytes"})
+  for (const char* word : {"trajectory.csv", "run.max_output_bytes = 100000000", "62 bytes"})
     EXPECT_NE(e.find(word), std::string::npos) << word << " in " << e;
   // The same plan with the limit raised on purpose is accepted; a plan at the limit is too.
   EXPECT_NO_THROW((void)parse_scenario(kGood, "test.toml", {"run.t_end=3", "run.output_dt=3.3e-7",
                                                             "run.max_output_bytes=1000000000"}));
-  EXPECT_NO_THROW((void)parse_scenario(kGood, "test.toml", {"run.t_end=1", "run.output_dt=1e-6"}));  // 50 MB
+  EXPECT_NO_THROW((void)parse_scenario(kGood, "test.toml", {"run.t_end=1", "run.output_dt=1e-6"}));  // 62 MB
 }
 
 TEST(DynScenario, ShippedScenariosAreValid) {
@@ -320,6 +320,75 @@ TEST(DynScenario, ShippedScenariosAreValid) {
   }
   EXPECT_GE(n, 8);  // sphere sliding, sphere spinning, egg cases a, b, c for both readings
   EXPECT_THROW((void)load_scenario(dir / "no-such-file.toml"), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace frictionlab::dynamics
+
+namespace frictionlab::dynamics {
+namespace {
+
+// [body] of another shape kind (docs/convex-bodies.md §10): its parameters, the centre of mass as a
+// point, the full inertia tensor; the pose in [initial].
+TEST(DynScenario, ShapedBodiesReadTheirKeys) {
+  const std::string ellipsoid = R"(
+[body]
+shape = "ellipsoid"
+semi_axes = [0.05, 0.04, 0.03]
+mass = 0.5
+com = [0.001, 0, -0.002]
+inertia = [[3e-4, -1e-5, 0], [-1e-5, 3.4e-4, 0], [0, 0, 4e-4]]
+[contact]
+k = 0.2
+lambda = 1e7
+[initial]
+gamma = [0, 0, 1]
+eps = "static"
+position = [1.5, -2]
+heading = 0.3
+[run]
+t_end = 1
+)";
+  const Scenario s = parse_scenario(ellipsoid, "e.toml");
+  EXPECT_EQ(s.body.shape->kind(), "ellipsoid");
+  EXPECT_FALSE(s.body.axisymmetric.has_value());
+  EXPECT_EQ(s.body.centre_of_mass, Eigen::Vector3d(0.001, 0.0, -0.002));
+  EXPECT_EQ(s.body.inertia(0, 1), -1e-5);
+  EXPECT_EQ(s.body.inertia(1, 0), -1e-5);
+  EXPECT_EQ(s.initial.position, Eigen::Vector2d(1.5, -2.0));
+  EXPECT_EQ(s.initial.heading, 0.3);
+  const StateVector x0 = initial_state(s);
+  EXPECT_EQ(position(x0), Eigen::Vector2d(1.5, -2.0));
+  // Heading 0.3 about the vertical from the upright start: q = (cos 0.15, 0, 0, sin 0.15).
+  EXPECT_NEAR(orientation(x0)[0], std::cos(0.15), 1e-15);
+  EXPECT_NEAR(orientation(x0)[3], std::sin(0.15), 1e-15);
+  // The resolved text reads back as the same scenario.
+  const Scenario again = parse_scenario(s.resolved_toml, "again.toml");
+  EXPECT_EQ(again.body.inertia, s.body.inertia);
+  EXPECT_EQ(again.body.centre_of_mass, s.body.centre_of_mass);
+
+  const auto error = [&](const std::vector<std::string>& overrides) {
+    try {
+      (void)parse_scenario(ellipsoid, "e.toml", overrides);
+    } catch (const std::invalid_argument& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  EXPECT_NE(error({"body.inertia=[[3e-4, 0], [0, 3e-4]]"}).find("body.inertia must be the full tensor"), std::string::npos);
+  EXPECT_NE(error({"body.inertia=[[1, 0, 0], [0, 1, 0], [0, 0, 3]]"}).find("must not exceed the sum of the other two"), std::string::npos);
+  EXPECT_NE(error({"body.inertia=[[1, 0, 0], [0, 1, 0], [0, 0, 1]]"}).find("body.inertia"), std::string::npos);  // > m r_max^2
+  EXPECT_NE(error({"body.radius=0.1"}).find("body.radius"), std::string::npos);
+  EXPECT_NE(error({"body.com=[0, 0, 0.1]"}).find("body.com"), std::string::npos);
+  EXPECT_NE(error({"initial.position=[1, 2, 3]"}).find("initial.position"), std::string::npos);
+
+  const std::string disk = replace(replace(ellipsoid, "shape = \"ellipsoid\"\nsemi_axes = [0.05, 0.04, 0.03]",
+                                           "shape = \"toroidal-disk\"\nradius = 0.02\nrim_radius = 0.003"),
+                                   "com = [0.001, 0, -0.002]\ninertia = [[3e-4, -1e-5, 0], [-1e-5, 3.4e-4, 0], [0, 0, 4e-4]]\n",
+                                   "");
+  const Scenario d = parse_scenario(replace(disk, "gamma = [0, 0, 1]", "gamma = [1, 0, 0]"), "d.toml");
+  EXPECT_EQ(d.body.shape->kind(), "toroidal-disk");
+  EXPECT_GT(d.body.inertia(2, 2), d.body.inertia(0, 0));  // the axis has the largest moment
 }
 
 }  // namespace

@@ -54,7 +54,7 @@ constexpr double kConservationRelTol = 1e-9;
 TEST(DynSimulation, FreeFlightConservesEnergyMomentumAndAngularMomentum) {
   const testing::ForbiddenLaw law;
   const Body body = egg_body("egg-printed");
-  const Eigen::Vector3d J(body.A, body.A, body.C);
+  const Eigen::Vector3d J(body.axisymmetric->A, body.axisymmetric->A, body.axisymmetric->C);
   for (const double g : {0.0, 9.81}) {
     const BodyOnPlane sys(body, PlaneContact{0.1, 1e7, g}, law);
     const StateVector x0 =
@@ -610,7 +610,7 @@ TEST(DynSimulation, SamplesInsideStepsFollowTheFreeSymmetricTop) {
   const RunSummary s = simulate(sys, x0, tight(0.5, 2e-3), &rec);
   ASSERT_EQ(reason(s), "t_end") << s.message;
   ASSERT_LT(2 * s.steps, static_cast<long>(rec.rows.size())) << "most samples must lie inside steps";
-  const double lambda = (body.C - body.A) * w0.z() / body.A;
+  const double lambda = (body.axisymmetric->C - body.axisymmetric->A) * w0.z() / body.axisymmetric->A;
   for (const auto& r : rec.rows) {
     const double c = std::cos(lambda * r.t), sn = std::sin(lambda * r.t);
     const Eigen::Vector3d w(w0.x() * c - w0.y() * sn, w0.x() * sn + w0.y() * c, w0.z());

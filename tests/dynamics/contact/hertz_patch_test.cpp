@@ -34,7 +34,7 @@ Body spheroid_body(double equatorial, double polar) {
 }
 
 HertzContact at(const Body& body, const Eigen::Vector3d& gamma, double eps) {
-  const ContactGeometry geometry(body.profile, body.com);
+  const ContactGeometry geometry(body.axisymmetric->profile, body.axisymmetric->com);
   return HertzNormalContact(kEStar).evaluate(geometry, geometry.contact_point(gamma), gamma, eps);
 }
 
@@ -105,7 +105,7 @@ TEST(DynHertzPatch, SpheroidAtItsEquatorFollowsHertzsEllipseOfItsTwoRadii) {
 // -dV/dt with gamma' = gamma x omega. Central differences on the egg at random orientations.
 TEST(DynHertzPatch, NormalForceAndTorqueDeriveFromThePotential) {
   const Body body = egg_body("egg-homogeneous");
-  const ContactGeometry geometry(body.profile, body.com);
+  const ContactGeometry geometry(body.axisymmetric->profile, body.axisymmetric->com);
   const HertzNormalContact model(kEStar);
   std::mt19937 rng(4);
   std::normal_distribution<double> n;
@@ -130,7 +130,7 @@ TEST(DynHertzPatch, NormalForceAndTorqueDeriveFromThePotential) {
 // ~1e-10 relative); one-sided at the poles.
 TEST(DynHertzPatch, StiffnessSlopeMatchesDifferencesOfTheStiffness) {
   const Body body = egg_body("egg-printed");
-  const ContactGeometry geometry(body.profile, body.com);
+  const ContactGeometry geometry(body.axisymmetric->profile, body.axisymmetric->com);
   const HertzNormalContact model(kEStar);
   const double h = 1e-5;
   for (const double g3 : {-0.9999, -0.8, -0.3, 0.0, 0.4, 0.9, 0.99, 0.9999}) {
@@ -149,7 +149,7 @@ TEST(DynHertzPatch, StiffnessSlopeMatchesDifferencesOfTheStiffness) {
 
 TEST(DynHertzPatch, MatchedModulusGivesTheStiffnessAtTheReferenceOrientation) {
   const Body body = egg_body("egg-printed");
-  const ContactGeometry geometry(body.profile, body.com);
+  const ContactGeometry geometry(body.axisymmetric->profile, body.axisymmetric->com);
   for (const double g3 : {1.0, 0.3, -1.0}) {
     const double E = modulus_matching_stiffness(geometry, 1e7, g3);
     EXPECT_NEAR(HertzNormalContact(E).stiffness(geometry, g3), 1e7, 1e-15 * 1e7 * 4);
@@ -171,7 +171,7 @@ struct RockingRun {
 RockingRun rock_frictionless_egg(double tol) {
   const testing::CoulombCircleTestLaw law;  // k = 0: no friction at all
   const Body body = egg_body("egg-homogeneous");
-  const ContactGeometry geometry(body.profile, body.com);
+  const ContactGeometry geometry(body.axisymmetric->profile, body.axisymmetric->com);
   PlaneContact plane{0.0, 1e7, 9.81};
   plane.patch = PatchModel::hertz;
   plane.E_star = modulus_matching_stiffness(geometry, 1e7, 1.0);

@@ -62,7 +62,7 @@ TEST(DynPatchModel, HertzMatchesLambdaAtTheReferenceOrientation) {
   const std::string sphere_body = "profile = \"sphere\"\nradius = 0.05\nmass = 1";
   egg.replace(egg.find(sphere_body), sphere_body.size(), "profile = \"egg-printed\"\nmass = 2");
   const Scenario e = parse_scenario(egg, "egg.toml", {"contact.patch=hertz", "contact.lambda_gamma3=0"});
-  const ContactGeometry geometry(e.body.profile, e.body.com);
+  const ContactGeometry geometry(e.body.axisymmetric->profile, e.body.axisymmetric->com);
   EXPECT_NEAR(HertzNormalContact(e.contact.E_star).stiffness(geometry, 0.0), 1e7, 1e-12 * 1e7);
   EXPECT_GT(std::abs(HertzNormalContact(e.contact.E_star).stiffness(geometry, 1.0) - 1e7), 1e5);
 }

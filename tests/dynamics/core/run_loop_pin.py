@@ -42,8 +42,13 @@ BODY_T_END = 0.2  # s
 BODY_OUTPUT_DT = 0.002  # s
 SKIPPED_KEYS = {"wall_time_s", "scenario.source"}
 # The size of a body's trajectory.csv follows from its columns, which are pinned one by one: it grew
-# when the body's `stick` column was added (docs/dynamics.md §6), which the pin allows.
+# when the body's `stick` column and its pose (x, y, qw..qz) were added (docs/dynamics.md §6),
+# which the pin allows.
 BODY_UNCOMPARED_KEYS = {"summary:output.trajectory_bytes"}
+# Shipped scenarios the build that recorded the pin could not run (shapes other than bodies of
+# revolution, docs/convex-bodies.md): not pinned; their physics is checked by DynConvexBodyMotion
+# (docs/convex-bodies.md §12). Their DynRunLoopPin tests run nothing.
+AFTER_THE_PIN = {"ellipsoid-case-a", "ellipsoid-long-axis", "disk-rolling-circle", "disk-spin-to-rest"}
 
 
 def fnv1a64(texts):
@@ -62,6 +67,8 @@ def is_puck(path):
 def runs(scenario_filter=None):
     for name in sorted(os.listdir(SCENARIOS)):
         if not name.endswith(".toml") or (scenario_filter and name[:-5] != scenario_filter):
+            continue
+        if name[:-5] in AFTER_THE_PIN:
             continue
         path = os.path.join(SCENARIOS, name)
         patches = [None] if is_puck(path) else ["section", "hertz"]
@@ -114,6 +121,9 @@ def main():
     ap.add_argument("--jobs", type=int, default=os.cpu_count() or 1)
     a = ap.parse_args()
     todo = list(runs(a.scenario))
+    if not todo and a.scenario in AFTER_THE_PIN:
+        print(f"run_loop_pin: {a.scenario} was added after the pin was recorded: nothing pinned")
+        return
     if not todo:
         sys.exit(f"run_loop_pin: error: no shipped scenario named {a.scenario!r} in {SCENARIOS}")
     with ThreadPoolExecutor(a.jobs) as ex:

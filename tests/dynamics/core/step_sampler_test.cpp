@@ -14,7 +14,9 @@ namespace {
 
 // The egg in free flight without gravity, spinning about its symmetry axis at w: omega stays
 // (0, 0, w); gamma and v turn about e3 at -w (gamma' = gamma x omega); eps grows at the constant
-// vertical speed v.gamma (r(gamma).gamma depends on gamma3 only, which is fixed).
+// vertical speed v.gamma (r(gamma).gamma depends on gamma3 only, which is fixed). The pose
+// (dynamics/body/state.h): the orientation turns by w t about body e3, q = q0 (cos(w t/2), 0, 0,
+// sin(w t/2)), and the centre moves at the constant world velocity q0 v0.
 struct SpinningFlight {
   double w = 30.0;
   Eigen::Vector3d v0{0.3, -0.2, 0.1};
@@ -23,7 +25,13 @@ struct SpinningFlight {
 
   [[nodiscard]] StateVector at(double t) const {
     const Eigen::Matrix3d turn = Eigen::AngleAxisd(-w * t, Eigen::Vector3d::UnitZ()).toRotationMatrix();
-    return make_state(turn * v0, {0.0, 0.0, w}, turn * g0, eps0 + v0.dot(g0) * t);
+    StateVector x = make_state(turn * v0, {0.0, 0.0, w}, turn * g0, eps0 + v0.dot(g0) * t);
+    const Eigen::Vector4d o = orientation_from(g0, 0.0);
+    const Eigen::Quaterniond q0(o[0], o[1], o[2], o[3]);
+    const Eigen::Quaterniond q = q0 * Eigen::Quaterniond(Eigen::AngleAxisd(w * t, Eigen::Vector3d::UnitZ()));
+    orientation(x) << q.w(), q.x(), q.y(), q.z();
+    position(x) = (q0 * v0 * t).head<2>();
+    return x;
   }
 };
 

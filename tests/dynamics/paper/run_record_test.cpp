@@ -76,7 +76,7 @@ TEST(PaperRunRecord, TheComparisonSeriesReadsBackBitForBit) {
 }
 
 TEST(PaperRunRecord, EveryTerminationReasonIsFoundByItsName) {
-  for (int i = 0; i <= static_cast<int>(Termination::output_limit); ++i) {
+  for (int i = 0; i <= static_cast<int>(Termination::flat_face); ++i) {
     const auto t = static_cast<Termination>(i);
     EXPECT_EQ(termination_named(to_string(t)), t) << to_string(t);
   }
