@@ -202,7 +202,7 @@ TEST(DynSimulateCommand, AFileSizeLimitStopsTheRunWithOneErrorAndValidFiles) {
 }
 
 // run.max_output_bytes, enforced by the writer on the bytes it writes: the plan (1001 rows of at
-// least 62 bytes) fits 100 kB, the rows (~550 bytes each) do not. The run stops with reason
+// least 64 bytes) fits 100 kB, the rows (~550 bytes each) do not. The run stops with reason
 // output-limit (exit 3, one line), its file whole and within one row of the limit, never past it.
 TEST(DynSimulateCommand, AnOutputPastRunMaxOutputBytesStopsTheRunAtTheLimit) {
   const auto dir = fresh_dir("max_output_bytes");
