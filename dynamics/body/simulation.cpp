@@ -6,6 +6,7 @@
 #include <string>
 
 #include "dynamics/body/stick.h"
+#include "dynamics/body/rocking_energy.h"
 #include "dynamics/body/tolerance_scales.h"
 #include "dynamics/core/limit_set.h"
 #include "dynamics/core/run_loop.h"
@@ -80,18 +81,18 @@ class BodyOnPlane::Monitor {
     s.max_gamma_drift = std::max(s.max_gamma_drift, std::abs(vertical(x).norm() - 1.0));
     settling_.update(t, c.in_contact, c.u.dot(c.gamma));
     const bool settled = settling_.settled(t);
-    const double kinetic = kinetic_energy_(x);
+    const double kinetic = motion_energy_(x, c);
     const auto stagnation_rule = [&](const char* energy_clause) {
       s.rule = std::string("settled contact (in contact with |eps'| < run.settle_normal_speed at every step of the "
-                           "last run.settle_time), U < run.rest_slip_speed, |Omega| < run.rest_spin, kinetic "
-                           "energy ") +
+                           "last run.settle_time), U < run.rest_slip_speed, |Omega| < run.rest_spin, energy of "
+                           "motion (kinetic + rocking, dynamics/body/rocking_energy.h) ") +
                energy_clause;
       s.thresholds = {s.settle.time, s.settle.normal_speed, s.rest.slip_speed, s.rest.spin, s.rest.kinetic_energy};
     };
     if (settled && s.rest.at_rest(c.in_contact, c.U, c.Omega, kinetic)) {
       stop(Termination::rest, "settled since t = " + message_number(settling_.since()) +
                                   " s; U = " + message_number(c.U) + " m/s, |Omega| = " +
-                                  message_number(std::abs(c.Omega)) + " 1/s and kinetic energy " +
+                                  message_number(std::abs(c.Omega)) + " 1/s and energy of motion (kinetic + rocking) " +
                                   message_number(kinetic) + " J are below the rest thresholds");
       stagnation_rule("< run.rest_kinetic_energy");
       return After::stopped;
@@ -131,7 +132,7 @@ class BodyOnPlane::Monitor {
       stop(Termination::rolling, "the contact, settled since t = " + message_number(settling_.since()) +
                                      " s, neither slips (U = " + message_number(c.U) +
                                      " m/s) nor spins (Omega = " + message_number(c.Omega) +
-                                     " 1/s) but the kinetic energy " + message_number(kinetic) +
+                                     " 1/s) but the energy of motion (kinetic + rocking) " + message_number(kinetic) +
                                      " J is above run.rest_kinetic_energy = " +
                                      message_number(s.rest.kinetic_energy.value) +
                                      " J: the body rolls without slip");
@@ -175,7 +176,7 @@ class BodyOnPlane::Monitor {
   bool stick_may_enter(double t, const StateVector& x, const ContactState& c) {
     if (!options_.stick || s_.stick_degenerate) return false;
     if (!(settling_.settled(t) && s_.rest.contact_stagnant(c.in_contact, c.U, c.Omega))) return false;
-    if (s_.rest.at_rest(c.in_contact, c.U, c.Omega, kinetic_energy_(x))) return false;
+    if (s_.rest.at_rest(c.in_contact, c.U, c.Omega, motion_energy_(x, c))) return false;
     if (sys_.law().has_poles() || LimitSet(sys_.law(), sys_.plane().k, c.N, c.a, c.b).degenerate()) {
       // No limit set to hold the contact (no interior, or D is not a support function across a
       // pole of the law): the run goes on as without stick (docs/dynamics.md §5).
@@ -310,6 +311,13 @@ class BodyOnPlane::Monitor {
     return s.settle;
   }
   double kinetic_energy_(const StateVector& x) const { return sys_.kinetic_energy(x); }
+  // What the rest rule compares with run.rest_kinetic_energy: the kinetic energy and the rocking's
+  // potential energy (dynamics/body/rocking_energy.h), so that a turning point of a rocking, where
+  // the kinetic energy, the slip and the spin pass near zero together, is not taken for rest.
+  double motion_energy_(const StateVector& x, const ContactState& c) const {
+    return sys_.kinetic_energy(x) + rocking_energy(c.point.r, c.gamma, c.point.R_meridian, c.point.R_parallel,
+                                                   sys_.body().mass, sys_.plane().g);
+  }
 
   const BodyOnPlane& sys_;
   const RunOptions& options_;

@@ -48,7 +48,8 @@ BODY_UNCOMPARED_KEYS = {"summary:output.trajectory_bytes"}
 # Shipped scenarios the build that recorded the pin could not run (shapes other than bodies of
 # revolution, docs/convex-bodies.md): not pinned; their physics is checked by DynConvexBodyMotion
 # (docs/convex-bodies.md §12). Their DynRunLoopPin tests run nothing.
-AFTER_THE_PIN = {"ellipsoid-case-a", "ellipsoid-long-axis", "disk-rolling-circle", "disk-spin-to-rest"}
+AFTER_THE_PIN = {"ellipsoid-case-a", "ellipsoid-long-axis", "disk-rolling-circle", "disk-spin-to-rest",
+                 "rattleback-braked", "rattleback-reversal"}
 
 
 def fnv1a64(texts):
