@@ -6,7 +6,8 @@ path on the plane beside it.
 
 Reads the run folder's trajectory.csv (the pose: x, y, qw, qx, qy, qz; eps) and summary.json (the
 body as it ran; without it, scenario.toml). Frames are taken at regular times, at most 200 of them
-(--frames); each frame is 640 x 320 pixels, so a GIF of 120 frames is about 1 MB. A GIF is written
+(--frames); each frame is 640 x 320 pixels, so a GIF of 120 frames is 1-2 MB (1.7 MB and
+~20 s for 60 s of ellipsoid-case-a). A GIF is written
 by matplotlib's PillowWriter (python3-pil); a .mp4 needs ffmpeg (Debian package ffmpeg).
 
 The body is drawn at its pose (docs/convex-bodies.md §11): its axes e1 (solid), e2 (dashed), e3

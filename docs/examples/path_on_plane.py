@@ -11,7 +11,8 @@ run's folder (trajectory.csv, summary.json, scenario.toml) for animate_run.py.
 
 What is drawn (docs/dynamics.md §6, docs/convex-bodies.md §11): trajectory.csv's pose columns.
 `x, y` (m, world axes) are the centre of mass on the plane, not the contact point (they differ by
-the horizontal part of the lever from the centre of mass to the contact, at most the body's size).
+the horizontal part of the lever from the centre of mass to the contact, at most the body's
+largest distance from its centre of mass).
 `qw, qx, qy, qz` is the unit quaternion turning body vectors into world ones; a tick is the
 horizontal part of the body's e1 = R(q) (1, 0, 0), so it shrinks to nothing when e1 is vertical.
 
