@@ -5,7 +5,7 @@ path on the plane beside it.
     MPLBACKEND=Agg python3 docs/examples/animate_run.py run     # writes animation.gif
 
 Reads the run folder's trajectory.csv (the pose: x, y, qw, qx, qy, qz; eps) and summary.json (the
-body as it ran; without it, scenario.toml). Frames are taken at regular times, at most 200 of them
+body as it ran; without it, scenario.toml); the pose's conventions and the shapes are run_pose.py's. Frames are taken at regular times, at most 200 of them
 (--frames); each frame is 640 x 320 pixels, so a GIF of 120 frames is 1-2 MB (1.7 MB and
 ~20 s for 60 s of ellipsoid-case-a). A GIF is written
 by matplotlib's PillowWriter (python3-pil); a .mp4 needs ffmpeg (Debian package ffmpeg).
@@ -14,8 +14,9 @@ The body is drawn at its pose (docs/convex-bodies.md §11): its axes e1 (solid),
 (dotted) from the centre of mass, and the outline of its shape: an ellipsoid's three principal
 sections, a toroidal disk's rim and faces, a body of revolution's two meridians and widest circle.
 The centre of mass stands at the height that puts the body's lowest point at eps (the contact's
-height, < 0 in contact). A shape not known here is drawn as its axes only (of length
-summary.json's scales.size_R), its centre of mass at the height size_R.
+height, < 0 in contact); the trail is the contact point's path. A shape not known here is drawn
+as its axes only (of length summary.json's scales.size_R), its centre of mass at the height
+size_R, its trail the centre of mass's path.
 """
 
 import argparse
@@ -25,117 +26,13 @@ import sys
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from path_on_plane import quaternions, read_run, rotation_matrix, sample_times  # noqa: E402
+from run_pose import contact_on_plane, pose_world, quaternions, read_body, read_run, sample_times, to_world  # noqa: E402
 
 MAX_FRAMES = 200
 DEFAULT_FRAMES = 120
 DEFAULT_FPS = 20
 FIGSIZE = (8, 4)   # inches
 DPI = 80           # FIGSIZE * DPI = 640 x 320 pixels
-CURVE_POINTS = 73  # points on each outline curve (every 5 degrees)
-
-
-class Body:
-    """What is drawn of a shape: curves (each (n, 3), shape frame, m), the centre of mass c
-    (shape frame, m), the axes' half-lengths (m) and support(n) = max over the body of xi . n (m)."""
-
-    def __init__(self, kind, curves, com, axes, support):
-        self.kind, self.curves, self.com, self.axes, self.support = kind, curves, np.asarray(com, float), axes, support
-
-    def centre_height(self, gamma, eps):
-        """The height of the centre of mass (m) when the upward vertical seen from the body is
-        gamma and the lowest point is at height eps: eps + support(-gamma) + c . gamma."""
-        if self.support is None:
-            return None
-        return eps + self.support(-np.asarray(gamma, float)) + self.com @ gamma
-
-
-def _circle(radius, z=0.0, plane="xy"):
-    phi = np.linspace(0, 2 * np.pi, CURVE_POINTS)
-    c, s = radius * np.cos(phi), radius * np.sin(phi)
-    zz = np.full_like(phi, z)
-    return {"xy": np.column_stack([c, s, zz]), "xz": np.column_stack([c, zz, s]),
-            "yz": np.column_stack([zz, c, s])}[plane]
-
-
-def ellipsoid(semi_axes, com=(0, 0, 0)):
-    a = np.asarray(semi_axes, float)
-    phi = np.linspace(0, 2 * np.pi, CURVE_POINTS)
-    c, s, o = np.cos(phi), np.sin(phi), np.zeros_like(phi)
-    curves = [np.column_stack([a[0] * c, a[1] * s, o]), np.column_stack([a[0] * c, o, a[2] * s]),
-              np.column_stack([o, a[1] * c, a[2] * s])]
-    return Body("ellipsoid", curves, com, a, lambda n: float(np.sqrt(np.sum((a * n) ** 2))))
-
-
-def toroidal_disk(radius, rim_radius, com=(0, 0, 0)):
-    R, rho = float(radius), float(rim_radius)
-    curves = [_circle(R + rho), _circle(R, rho), _circle(R, -rho)]
-    return Body("toroidal-disk", curves, com, np.array([R + rho, R + rho, rho]),
-                lambda n: R * float(np.hypot(n[0], n[1])) + rho)
-
-
-def revolution(chi2, z_lo, z_hi, com=(0, 0, 0)):
-    """A body of revolution about e3: radius rho(z) = sqrt(sum_k chi2[k] z^k) for z in [z_lo, z_hi]
-    (summary.json's body; docs/dynamics.md §7)."""
-    z = np.linspace(z_lo, z_hi, 2001)
-    rho = np.sqrt(np.maximum(np.polynomial.polynomial.polyval(z, chi2), 0.0))
-    meridian = np.concatenate([rho, -rho[::-1]])
-    zz = np.concatenate([z, z[::-1]])
-    o = np.zeros_like(zz)
-    k = int(np.argmax(rho))
-    curves = [np.column_stack([meridian, o, zz]), np.column_stack([o, meridian, zz]), _circle(rho[k], z[k])]
-
-    def support(n):  # the largest of xi . n over the sampled profile (2001 points: to ~1e-7 of the size)
-        return float(np.max(rho * np.hypot(n[0], n[1]) + z * n[2]))
-
-    return Body("revolution", curves, com, np.array([rho[k], rho[k], max(abs(z_lo), abs(z_hi))]), support)
-
-
-def body_from_run(summary, scenario_toml=None):
-    """The Body of a run: from summary.json's resolved body, else from scenario.toml (a dict)."""
-    if summary is not None:
-        b = summary["body"]
-        com = b.get("centre_of_mass", [0, 0, 0])
-        p = b.get("parameters", {})
-        if b.get("shape") == "ellipsoid":
-            return ellipsoid(p["semi_axes"], com)
-        if b.get("shape") == "toroidal-disk":
-            return toroidal_disk(p["radius"], p["rim_radius"], com)
-        if b.get("shape") == "revolution" and "chi2" in b:
-            return revolution(b["chi2"], b["z_lo"], b["z_hi"], com)
-        size = summary.get("scales", {}).get("size_R", 0.1)
-        return Body(b.get("shape", "unknown"), [], com, np.full(3, size), None)
-    b = (scenario_toml or {}).get("body", {})
-    com = b.get("com", [0, 0, 0])
-    com = [0, 0, com] if np.isscalar(com) else com
-    if b.get("shape") == "ellipsoid":
-        return ellipsoid(b["semi_axes"], com)
-    if b.get("shape") == "toroidal-disk":
-        return toroidal_disk(b["radius"], b["rim_radius"], com)
-    return Body(b.get("shape", "revolution"), [], com, np.full(3, 0.1), None)
-
-
-def read_body(folder, summary):
-    if summary is None and os.path.isfile(os.path.join(folder, "scenario.toml")):
-        import tomllib
-
-        with open(os.path.join(folder, "scenario.toml"), "rb") as f:
-            return body_from_run(None, tomllib.load(f))
-    return body_from_run(summary)
-
-
-def pose_world(body, q, x, y, eps):
-    """The centre of mass in world axes (m) and R(q) for one sample."""
-    R = rotation_matrix(q)
-    z = body.centre_height(R[2, :], eps)  # R^T e_z = gamma, the vertical seen from the body
-    if z is None:
-        z = float(body.axes.max())
-    return np.array([x, y, z]), R
-
-
-def to_world(body, points, centre, R):
-    """Shape-frame points (n, 3) in world axes at the pose (centre of mass, R)."""
-    return centre + (points - body.com) @ R.T
 
 
 def check_output(path):
@@ -162,6 +59,9 @@ def animate(folder, output, frames=DEFAULT_FRAMES, fps=DEFAULT_FPS):
     body = read_body(folder, summary)
     t, xs, ys = columns["t"], columns["x"], columns["y"]
     eps = columns.get("eps", np.zeros_like(t))
+    contact = contact_on_plane(body, columns)
+    # The trail is the contact point's path where the shape is known, else the centre of mass's.
+    px, py = (xs, ys) if contact is None else (contact[:, 0], contact[:, 1])
     qs = quaternions(columns)
     idx = sample_times(t, frames)
     size = float(body.axes.max())
@@ -173,12 +73,12 @@ def animate(folder, output, frames=DEFAULT_FRAMES, fps=DEFAULT_FPS):
     name = summary["scenario"]["name"] if summary else os.path.basename(os.path.normpath(folder))
     fig.suptitle(name, fontsize=10)
 
-    ax2.plot(xs, ys, color="0.75", lw=1)
+    ax2.plot(px, py, color="0.75", lw=1)
     (trail2,) = ax2.plot([], [], color="black", lw=1.2)
     (here2,) = ax2.plot([], [], "o", ms=6, mfc="white", mec="black")
-    ax2.plot(xs[:1], ys[:1], "o", ms=4, color="black")
-    span = max(np.ptp(xs), np.ptp(ys), 2 * half)
-    cx, cy = (xs.max() + xs.min()) / 2, (ys.max() + ys.min()) / 2
+    ax2.plot(px[:1], py[:1], "o", ms=4, color="black")
+    span = max(np.ptp(px), np.ptp(py), 2 * half)
+    cx, cy = (px.max() + px.min()) / 2, (py.max() + py.min()) / 2
     ax2.set_xlim(cx - 0.55 * span, cx + 0.55 * span)
     ax2.set_ylim(cy - 0.55 * span, cy + 0.55 * span)
     ax2.set_aspect("equal")
@@ -204,14 +104,14 @@ def animate(folder, output, frames=DEFAULT_FRAMES, fps=DEFAULT_FPS):
             tip = centre + body.axes[i] * R[:, i]
             line.set_data_3d([centre[0], tip[0]], [centre[1], tip[1]], [centre[2], tip[2]])
         # The trail inside the view only: mplot3d does not clip lines at its box.
-        tx, ty = xs[: k + 1], ys[: k + 1]
+        tx, ty = px[: k + 1], py[: k + 1]
         inside = (np.abs(tx - centre[0]) <= half) & (np.abs(ty - centre[1]) <= half)
         trail3.set_data_3d(np.where(inside, tx, np.nan), np.where(inside, ty, np.nan), np.zeros_like(tx))
         ax3.set_xlim(centre[0] - half, centre[0] + half)
         ax3.set_ylim(centre[1] - half, centre[1] + half)
         ax3.set_zlim(0, half)
         trail2.set_data(tx, ty)
-        here2.set_data(xs[k : k + 1], ys[k : k + 1])
+        here2.set_data(px[k : k + 1], py[k : k + 1])
         label.set_text(f"t = {t[k]:.2f} s")
         return [trail3, trail2, here2, label, *outline, *axis_lines]
 
