@@ -5,10 +5,10 @@ path on the plane beside it.
     MPLBACKEND=Agg python3 docs/examples/animate_run.py run     # writes animation.gif
 
 Reads the run folder's trajectory.csv (the pose: x, y, qw, qx, qy, qz; eps) and summary.json (the
-body as it ran; without it, scenario.toml); the pose's conventions and the shapes are run_pose.py's. Frames are taken at regular times, at most 200 of them
-(--frames); each frame is 640 x 320 pixels, so a GIF of 120 frames is 1-2 MB (1.7 MB and
-~20 s for 60 s of ellipsoid-case-a). A GIF is written
-by matplotlib's PillowWriter (python3-pil); a .mp4 needs ffmpeg (Debian package ffmpeg).
+body as it ran; without it, scenario.toml); the conventions and the shapes are run_pose.py's.
+Frames are taken at regular times, at most 200 of them (--frames); each is 640 x 320 pixels, so a
+GIF of 120 frames is 1-2 MB (1.7 MB in 14 s for 60 s of ellipsoid-case-a). A GIF is written by
+matplotlib's PillowWriter (python3-pil); a .mp4 needs ffmpeg (Debian package ffmpeg).
 
 The body is drawn at its pose (docs/convex-bodies.md §11): its axes e1 (solid), e2 (dashed), e3
 (dotted) from the centre of mass, and the outline of its shape: an ellipsoid's three principal
@@ -38,6 +38,9 @@ DPI = 80           # FIGSIZE * DPI = 640 x 320 pixels
 def check_output(path):
     """None if the output's format can be written here, else the one-line error."""
     ext = os.path.splitext(path)[1].lower()
+    folder = os.path.dirname(os.path.abspath(path))
+    if not os.path.isdir(folder):  # before the frames are drawn, which takes seconds
+        return f"cannot write {path}: no folder {folder}"
     if ext == ".gif":
         return None
     if ext == ".mp4":

@@ -25,8 +25,8 @@ import tempfile
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from run_pose import (contact_on_plane, e1_on_plane, heading_from_quaternion,  # noqa: E402,F401
-                      quaternions, read_body, read_run, sample_times)
+from run_pose import contact_on_plane, e1_on_plane, quaternions, read_body, read_run, sample_times  # noqa: E402
+from run_pose import heading_from_quaternion  # noqa: E402,F401 (the heading, for users of this script)
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 DEFAULT_SCENARIO = "ellipsoid-case-a"
@@ -35,7 +35,7 @@ DEFAULT_TICKS = 40     # heading ticks along the path
 
 
 def data_dir():
-    return os.environ.get("FRICTIONLAB_DATA_DIR", os.path.join(HERE, "..", "..", "data"))
+    return os.environ.get("FRICTIONLAB_DATA_DIR", os.path.normpath(os.path.join(HERE, "..", "..", "data")))
 
 
 def plot_path(ax, columns, contact=None, ticks=DEFAULT_TICKS, tick_length=None):
@@ -107,6 +107,8 @@ def main(argv=None):
         parser.error(f"--ticks {args.ticks} is invalid: at least 1")
     if not args.output.lower().endswith(".png"):
         parser.error(f"--output {args.output} is invalid: the figure is a .png file")
+    if not os.path.isdir(os.path.dirname(os.path.abspath(args.output))):  # before the run
+        sys.exit(f"path_on_plane.py: error: cannot write {args.output}: no folder {os.path.dirname(os.path.abspath(args.output))}")
 
     import matplotlib.pyplot as plt
 
@@ -127,7 +129,10 @@ def main(argv=None):
     fig, ax = plt.subplots(figsize=(7, 6), constrained_layout=True)
     plot_path(ax, columns, contact, ticks=args.ticks)
     ax.set_title(f"{name}: {'contact point' if contact is not None else 'centre of mass'} on the plane")
-    fig.savefig(args.output, dpi=100)
+    try:
+        fig.savefig(args.output, dpi=100)
+    except OSError as e:
+        sys.exit(f"path_on_plane.py: error: cannot write {args.output}: {e}")
     print(f"wrote {args.output}")
 
 
