@@ -2,22 +2,23 @@
 // dynamics/rigid_rolling/steady_circle.h (docs/rigid-rolling.md §4; docs/convex-bodies.md §13).
 //
 // Why the compliant circle does not last, and what must vanish for it to last: the rigid circle
-// pivots about the normal (Omega_n = omega.gamma = Omega + s sin(beta) != 0), and on a patch of
-// radius a every coupled law answers that pivoting with a spin moment M ~ k N a (exact law: 0.55
-// k N a here; ellipsoidal law: ~ k N Rb) which brakes it and makes the disk right itself. The
-// centripetal force m rG Omega^2 (0.30 k N here) needs only a creep of the contact, U ~ a |Omega_n|
-// (the coupled laws are smooth in U while Omega_n != 0), whose effect on the path is ~ U/V ~ 1e-4:
-// negligible against the moment's. So over a fixed interval T the lean beta(t) and the precession
-// rate (the turning rate of the axis's horizontal projection) leave the closed form by deviations
-// proportional to M, i.e.
-//   * at fixed k, to the patch radius a = sqrt(2 delta R_major), delta = (m g/lambda)^(2/3): a decade
+// pivots about the normal (Omega_n = omega.gamma = Omega + s sin(beta) = -1.18 1/s), and on a patch
+// of major semi-axis a every coupled law answers that pivoting with a spin moment M ~ k N a (exact
+// law: 0.39 k N a here, the patch an ellipse b/a = 0.36; ellipsoidal law: ~ k N Rb) which brakes it
+// and makes the disk right itself. The centripetal force m rG Omega^2 (0.044 N = 0.089 m g = 0.30 k N)
+// needs a creep of the contact, U ~ 0.2 a |Omega_n| (the coupled laws are smooth in U while Omega_n
+// != 0; ~1e-4 of the rolling speed at lambda = 1e9): it too scales with a (with Rb). So over a fixed
+// interval T the lean beta(t) and the precession rate (the turning rate of the axis's horizontal
+// projection) leave the closed form by deviations proportional to a (to first order), i.e.
+//   * at fixed k, to the patch size a = sqrt(2 delta R_major), delta = (m g/lambda)^(2/3): a decade
 //     of lambda shrinks them by 10^(1/3) = 2.154 (StiffeningContact...);
 //   * with the ellipsoidal law, whose pure-spin torque is k N Rb for a given Rb, to Rb at fixed k and
 //     lambda (VanishingSpinMoment...).
-// k itself is no clean parameter: below ~0.3/(3 pi/8) ~ 0.26... of the force ratio the creep ratio
-// u = U/(a |Omega_n|) grows and M/(kNa) falls with it (0.55 at k = 0.3, ~0.2 at k = 0.1), and below
-// k ~ 0.09 the patch cannot give the centripetal force and the disk slides off (measured with the
-// command line, docs/convex-bodies.md §13).
+// k itself is no clean parameter: as k falls, the force ratio F1/(kN) that the centripetal force
+// needs rises, and with it the creep ratio u = U/(a |Omega_n|), and M/(kNa) falls much faster than k
+// (0.39 at k = 0.3, 0.12 at k = 0.1, 0.03 at k = 0.09); below k = m rG Omega^2/(m g) = 0.089 no
+// law can give the centripetal force and the disk slides off the circle (measured with the command
+// line, docs/convex-bodies.md §13).
 //
 // The expected values are the closed form's (an independent code: the rigid no-slip model); the
 // runs' deviations must shrink at the predicted rate and their extrapolation to a -> 0 (Rb -> 0)
