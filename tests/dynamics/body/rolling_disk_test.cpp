@@ -46,8 +46,8 @@ namespace {
 constexpr double kR = 0.02, kRho = 0.003, kMass = 0.05, kG = 9.81;
 constexpr double kTilt = 0.15, kContactCircle = 0.25;
 constexpr double kK = 0.3;
-// A tenth of a rigid turn (3.34 s): long enough for the pivot's braking to show (the deviations
-// grow ~ t^2), short enough to stay a perturbation of the circle at every lambda used.
+// A tenth of a rigid turn (3.34 s): long enough for the pivot's braking to show, short enough to
+// stay a perturbation of the circle at every lambda used (the largest deviation, at 1e8, is 21 % of beta).
 constexpr double kSpan = 0.3;
 
 Body disk_body() {
@@ -197,9 +197,8 @@ TEST(DynRollingDisk, StiffeningContactConvergesToTheRigidSteadyCircle) {
 // ---------------------------------------------------------------------------------------------
 // The spin moment alone made small: the ellipsoidal law (pure-spin torque k N Rb) at fixed k = 0.3
 // and lambda = 1e8, Rb = 1e-4 and 1e-5 m (the default Rb = (3 pi/16) a is 2.2e-4 m there). The
-// deviations must shrink tenfold (kRbRatioTol: measured 10.1 in tilt, 10.1 in precession; at Rb =
-// 1e-6 they shrink tenfold again, 9.8, but the creep stiffness kN/(Rb |Omega_n|) makes that run take
-// 3 s) and their extrapolation to Rb = 0 must give the closed form to kRbLimitTol: what remains is
+// deviations must shrink tenfold (kRbRatioTol: measured 10.2 in tilt, 10.1 in precession; at Rb =
+// 1e-6 they shrink tenfold again, but the creep stiffness kN/(Rb |Omega_n|) makes that run take 3 s) and their extrapolation to Rb = 0 must give the closed form to kRbLimitTol: what remains is
 // the compliance's share at lambda = 1e8 (and the Rb^2 term of this linear extrapolation).
 constexpr double kRbRatioTol = 0.05;   // relative, of 10
 constexpr double kRbLimitTol = 5e-4;   // relative, of Omega; of beta for the tilt (measured 9.1e-5, 2.4e-4)
