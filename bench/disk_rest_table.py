@@ -67,6 +67,11 @@ def start_state(folder):
     return {"omega": initial["omega"], "v": initial["v"]}
 
 
+def no_negative_zero(text):
+    """A number that rounds to zero is written without a sign ("-0.00" would read as a negative)."""
+    return text[1:] if text.startswith("-") and not any(c in "123456789" for c in text.split("e")[0]) else text
+
+
 def row(law, s, k_start, bounded):
     fs = s["final_state"]
     g, w = fs["gamma"], fs["omega"]
@@ -78,7 +83,8 @@ def row(law, s, k_start, bounded):
         reason += " (bounded)"
     omega_n = sum(a * b for a, b in zip(w, g))
     return (f"| `{law}` | {reason} | {s['final_time']:.4g} | {tilt:.3g} | {kinetic(s, fs) / k_start:.3g} | "
-            f"{omega_n:.3g} | {w_total:.3g} | {spin_share:.2f} | {s['min_N_over_mg']:.3f} | {s['wall_time_s']:.2g} |")
+            f"{no_negative_zero(f'{omega_n:.3g}')} | {w_total:.3g} | {no_negative_zero(f'{spin_share:.2f}')} | "
+            f"{s['min_N_over_mg']:.3f} | {s['wall_time_s']:.2g} |")
 
 
 def compare(x, y):
