@@ -1,6 +1,5 @@
 #include "dynamics/body/trajectory_csv.h"
 
-#include "friction/support/errors.h"
 #include "friction/support/number_format.h"
 
 namespace frictionlab::dynamics {
@@ -26,23 +25,10 @@ std::array<double, kTrajectoryColumns.size()> trajectory_row(const Sample& s) {
   return row;
 }
 
-std::string trajectory_header() {
-  std::string header;
-  for (std::size_t i = 0; i < kTrajectoryColumns.size(); ++i) {
-    header += kTrajectoryColumns[i];
-    header += i + 1 < kTrajectoryColumns.size() ? ',' : '\n';
-  }
-  return header;
-}
+std::string trajectory_header() { return trajectory_file_header(kTrajectoryColumns); }
 
-TrajectoryCsv::TrajectoryCsv(const std::filesystem::path& file, std::uint64_t max_bytes) : file_(file) {
-  const std::string header = trajectory_header();
-  if (max_bytes > 0 && header.size() > max_bytes)
-    throw support::invalid_value("run.max_output_bytes", static_cast<long long>(max_bytes),
-                                 "it must hold at least the header of trajectory.csv (" +
-                                     std::to_string(header.size()) + " bytes)");
-  file_.set_size_limit(max_bytes);
-  file_.append(header);
+TrajectoryCsv::TrajectoryCsv(const std::filesystem::path& file, std::uint64_t max_bytes)
+    : file_(file, trajectory_header(), max_bytes) {
   line_.reserve(512);
 }
 
@@ -60,22 +46,10 @@ void TrajectoryCsv::sample(const Sample& s) {
     support::append_shortest(line_, row[i]);
     line_.push_back(i + 1 < row.size() ? ',' : '\n');
   }
-  try {
-    file_.append(line_);
-  } catch (const support::OutputError& e) {
-    throw OutputFailure(e.what());
-  } catch (const support::SizeLimitReached& e) {
-    throw OutputLimitReached(std::string(e.what()) + " (run.max_output_bytes: raise it, or run.output_dt)");
-  }
+  file_.append(line_);
   ++rows_;
 }
 
-void TrajectoryCsv::close() {
-  try {
-    file_.close();
-  } catch (const support::OutputError& e) {
-    throw OutputFailure(e.what());
-  }
-}
+void TrajectoryCsv::close() { file_.close(); }
 
 }  // namespace frictionlab::dynamics

@@ -34,7 +34,8 @@
 // last whole row. A failed write throws OutputFailure, which stops the simulation; the writer
 // then stays failed. A size limit (run.max_output_bytes, dynamics/core/output_limit.h) refuses the row
 // that would pass it with OutputLimitReached, which stops the simulation too; the file keeps every
-// row before it (its size is at most the limit) and closes cleanly.
+// row before it (its size is at most the limit) and closes cleanly. (That file is every model's,
+// dynamics/core/trajectory_file.h; this writer formats the body's columns.)
 
 #include <array>
 #include <cstdint>
@@ -44,7 +45,7 @@
 
 #include "dynamics/body/equations_of_motion.h"  // the body's Sample and Observer
 #include "dynamics/core/observer.h"
-#include "friction/support/checked_output.h"
+#include "dynamics/core/trajectory_file.h"
 
 namespace frictionlab::dynamics {
 
@@ -81,7 +82,7 @@ class TrajectoryCsv final : public Observer {
   [[nodiscard]] const std::filesystem::path& path() const { return file_.path(); }
 
  private:
-  support::RecordFile file_;
+  TrajectoryFile file_;
   std::string line_;
   long rows_ = 0;
 };

@@ -3,7 +3,6 @@
 #include <cmath>
 #include <limits>
 
-#include "friction/support/errors.h"
 #include "friction/support/number_format.h"
 
 namespace frictionlab::dynamics::puck {
@@ -21,24 +20,10 @@ void put(std::string& line, double x) {
 
 }  // namespace
 
-std::string puck_trajectory_header() {
-  std::string header;
-  for (std::size_t i = 0; i < kPuckTrajectoryColumns.size(); ++i) {
-    header += kPuckTrajectoryColumns[i];
-    header += i + 1 < kPuckTrajectoryColumns.size() ? ',' : '\n';
-  }
-  return header;
-}
+std::string puck_trajectory_header() { return trajectory_file_header(kPuckTrajectoryColumns); }
 
 PuckTrajectoryCsv::PuckTrajectoryCsv(const std::filesystem::path& file, double a, std::uint64_t max_bytes)
-    : file_(file), a_(a) {
-  const std::string header = puck_trajectory_header();
-  if (max_bytes > 0 && header.size() > max_bytes)
-    throw support::invalid_value("run.max_output_bytes", static_cast<long long>(max_bytes),
-                                 "it must hold at least the header of trajectory.csv (" +
-                                     std::to_string(header.size()) + " bytes)");
-  file_.set_size_limit(max_bytes);
-  file_.append(header);
+    : file_(file, puck_trajectory_header(), max_bytes), a_(a) {
   line_.reserve(400);
 }
 
@@ -64,22 +49,10 @@ void PuckTrajectoryCsv::sample(const PuckSample& s) {
   put(line_, spin_work(s.x));
   line_ += static_cast<char>('0' + (s.mode.slip ? 1 : 0) + (s.mode.spin ? 2 : 0));
   line_ += '\n';
-  try {
-    file_.append(line_);
-  } catch (const support::OutputError& e) {
-    throw OutputFailure(e.what());
-  } catch (const support::SizeLimitReached& e) {
-    throw OutputLimitReached(std::string(e.what()) + " (run.max_output_bytes: raise it, or run.output_dt)");
-  }
+  file_.append(line_);
   ++rows_;
 }
 
-void PuckTrajectoryCsv::close() {
-  try {
-    file_.close();
-  } catch (const support::OutputError& e) {
-    throw OutputFailure(e.what());
-  }
-}
+void PuckTrajectoryCsv::close() { file_.close(); }
 
 }  // namespace frictionlab::dynamics::puck

@@ -19,8 +19,8 @@
 //   W_spin     J      work done against spinning friction so far
 //   held       -      0 none, 1 slip held at 0, 2 spin held, 3 both (dynamics/puck/puck_equations.h)
 //
-// Whole rows only, every write checked (support::RecordFile), and the size limit
-// run.max_output_bytes, as dynamics/trajectory_csv.h.
+// Whole rows only, every write checked, and the size limit run.max_output_bytes: the trajectory
+// file every model writes (dynamics/core/trajectory_file.h); this writer formats the columns.
 
 #include <array>
 #include <cstdint>
@@ -28,8 +28,8 @@
 #include <string>
 #include <string_view>
 
+#include "dynamics/core/trajectory_file.h"
 #include "dynamics/puck/puck_run.h"
-#include "friction/support/checked_output.h"
 
 namespace frictionlab::dynamics::puck {
 
@@ -55,7 +55,7 @@ class PuckTrajectoryCsv final : public PuckObserver {
   [[nodiscard]] std::uint64_t bytes() const { return file_.size(); }  ///< header and rows taken, bytes
 
  private:
-  support::RecordFile file_;
+  TrajectoryFile file_;
   double a_;
   std::string line_;
   long rows_ = 0;
