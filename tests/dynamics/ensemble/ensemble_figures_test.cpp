@@ -59,7 +59,9 @@ TEST(EnsembleFigures, UserTextIsEscapedForEnhancedText) {
     for (auto m = std::sregex_iterator(text.begin(), text.end(), shown); m != std::sregex_iterator(); ++m)
       for (const char* raw : {"study_x", "r_spin", "omega_3"})
         EXPECT_EQ((*m)[2].str().find(raw), std::string::npos) << name << ": " << m->str();
-    if (name == "divergence.gp") EXPECT_NE(text.find("title 'decoupled:r\\_spin=0 vs exact'"), std::string::npos) << text;
+    if (name == "divergence.gp") {
+      EXPECT_NE(text.find("title 'decoupled:r\\_spin=0 vs exact'"), std::string::npos) << text;
+    }
     if (name.rfind("map-", 0) == 0) {
       EXPECT_NE(text.find("set xlabel 'initial.omega\\_3'"), std::string::npos) << name << "\n" << text;
       EXPECT_NE(text.find("set title 'decoupled:r\\_spin=0"), std::string::npos) << name << "\n" << text;
