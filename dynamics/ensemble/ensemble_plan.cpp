@@ -121,7 +121,7 @@ EnsemblePlan EnsemblePlan::make(const Study& study) {
             for (auto& e : puck_start_overrides(p.puck_base_->initial.v, p.keys_, v)) o.push_back(std::move(e));
             (void)puck::resolve_puck(*p.document_, o);
           } else {
-            const StartState s = apply_start(p.base_->initial, p.keys_, v);
+            const StartState s = apply_start(p.base_->initial, p.base_->body.inertia, p.keys_, v);
             for (auto& e : start_overrides(s)) o.push_back(std::move(e));
             (void)p.document_->resolve(o);
           }
@@ -154,7 +154,7 @@ std::vector<std::string> EnsemblePlan::overrides(const RunId& id) const {
     o.push_back("contact.law=" + study_->laws.at(static_cast<std::size_t>(id.law)));
     return o;
   }
-  StartState s = apply_start(base_->initial, keys_, start_values(id.start));
+  StartState s = apply_start(base_->initial, base_->body.inertia, keys_, start_values(id.start));
   s = perturb_replica(std::move(s), study_->replica_size, rate_scale_, study_->seed, id.start, id.replica);
   std::vector<std::string> o = study_->set;
   for (auto& e : start_overrides(s)) o.push_back(std::move(e));

@@ -1,8 +1,10 @@
 #include "dynamics/ensemble/varied_key.h"
 
 #include <cmath>
+#include <numbers>
 #include <stdexcept>
 
+#include "dynamics/shapes/solid_mass_properties.h"
 #include "friction/support/errors.h"
 #include "friction/support/number_format.h"
 
@@ -18,6 +20,40 @@ std::string vector_text(const Eigen::Vector3d& v) {
   return out + "]";
 }
 
+std::string matrix_text(const Eigen::Matrix3d& m) {
+  std::string out = "[";
+  for (int i = 0; i < 3; ++i) {
+    if (i > 0) out += ", ";
+    out += vector_text(m.row(i).transpose());
+  }
+  return out + "]";
+}
+
+// body.misalignment (varied_key.h): the base tensor J with its horizontal principal axes turned to
+// `delta` about e3, its principal moments kept.
+Eigen::Matrix3d misaligned_inertia(const Eigen::Matrix3d& J, const std::string& key, double delta) {
+  if (!(std::abs(delta) < std::numbers::pi / 4))
+    throw support::invalid_value(key, delta,
+                                 "it is the angle (rad) of the principal axis nearest e1 from e1: |delta| < pi/4");
+  if (J(0, 2) != 0.0 || J(2, 0) != 0.0 || J(1, 2) != 0.0 || J(2, 1) != 0.0)
+    throw support::invalid_value(key, delta,
+                                 "it turns the principal axes about e3, which must be one: the base's body.inertia "
+                                 "needs J13 = J23 = 0, but J13 = " + support::message_number(J(0, 2)) +
+                                     ", J23 = " + support::message_number(J(1, 2)) + " kg m^2");
+  if (J(0, 0) == J(1, 1))
+    throw support::invalid_value(key, delta,
+                                 "the base's body.inertia has J11 = J22: equal horizontal moments have no misalignment, "
+                                 "and with J12 != 0 the principal axes are at 45 degrees to e1 (none is nearest e1)");
+  // The horizontal block alone (e3's moment set to 0, the smallest): a C equal to A or B cannot
+  // then mix e3 into the horizontal axes. Columns 1, 2 are those axes; A's is the one nearest e1.
+  Eigen::Matrix3d horizontal = J;
+  horizontal(2, 2) = 0.0;
+  const shapes::PrincipalInertia p = shapes::principal_inertia(horizontal);
+  const int a = std::abs(p.axes(0, 1)) >= std::abs(p.axes(0, 2)) ? 1 : 2;
+  const Eigen::Vector3d moments(p.moments[a], p.moments[3 - a], J(2, 2));
+  return shapes::inertia_from_principal(moments, Eigen::Vector3d::UnitZ(), delta);
+}
+
 }  // namespace
 
 VariedKey VariedKey::parse(const std::string& key, const std::string& where, bool puck) {
@@ -26,6 +62,10 @@ VariedKey VariedKey::parse(const std::string& key, const std::string& where, boo
   if (puck && key == "initial.omega") return k;  // the puck's spin: a scalar
   if (key == "initial.gamma3") {
     k.kind_ = Kind::gamma3;
+    return k;
+  }
+  if (key == "body.misalignment") {
+    k.kind_ = Kind::misalignment;
     return k;
   }
   for (const auto& [prefix, kind] : {std::pair{std::string("initial.omega"), Kind::omega},
@@ -48,9 +88,11 @@ VariedKey VariedKey::parse(const std::string& key, const std::string& where, boo
   return k;
 }
 
-StartState apply_start(const InitialState& base, const std::vector<VariedKey>& keys, const std::vector<double>& values) {
+StartState apply_start(const InitialState& base, const Eigen::Matrix3d& base_inertia, const std::vector<VariedKey>& keys,
+                       const std::vector<double>& values) {
   StartState s;
   s.initial = base;
+  s.inertia = base_inertia;
   for (std::size_t i = 0; i < keys.size(); ++i) {
     const VariedKey& k = keys[i];
     const double x = values.at(i);
@@ -75,6 +117,10 @@ StartState apply_start(const InitialState& base, const std::vector<VariedKey>& k
         s.initial.v[k.component()] = x;
         s.velocity_set = true;
         break;
+      case VariedKey::Kind::misalignment:
+        s.inertia = misaligned_inertia(base_inertia, k.name(), x);
+        s.inertia_set = true;
+        break;
     }
   }
   return s;
@@ -82,6 +128,7 @@ StartState apply_start(const InitialState& base, const std::vector<VariedKey>& k
 
 std::vector<std::string> start_overrides(const StartState& state) {
   std::vector<std::string> out = state.overrides;
+  if (state.inertia_set) out.push_back("body.inertia=" + matrix_text(state.inertia));
   if (state.gamma_set) out.push_back("initial.gamma=" + vector_text(state.initial.gamma));
   if (state.omega_set) out.push_back("initial.omega=" + vector_text(state.initial.omega));
   if (state.velocity_set) out.push_back("initial.v=" + vector_text(state.initial.v));

@@ -55,7 +55,11 @@ Eigen::Matrix3d inertia_from_principal(const Eigen::Vector3d& moments, const Eig
                         "it must be a finite, non-zero vector");
   if (!std::isfinite(angle)) throw invalid_value("inertia rotation angle", angle, "it must be finite (rad)");
   const Eigen::Matrix3d Q = Eigen::AngleAxisd(angle, axis / n).toRotationMatrix();
-  return rotate_inertia(moments.asDiagonal().toDenseMatrix(), Q);
+  // The product may sum J_ij and J_ji in different orders (an ulp apart): a tensor written out as a
+  // scenario's body.inertia should be symmetric exactly, so the lower triangle mirrors the upper.
+  Eigen::Matrix3d J = rotate_inertia(moments.asDiagonal().toDenseMatrix(), Q);
+  J.triangularView<Eigen::StrictlyLower>() = J.transpose().triangularView<Eigen::StrictlyLower>();
+  return J;
 }
 
 void validate_mass(double mass, std::string_view key) {

@@ -46,6 +46,7 @@ struct PrincipalInertia {
 /// clockwise about `axis`, right-hand rule) and whose principal moments about them are
 /// `moments` (kg m^2, in the order of e1, e2, e3): Q diag(moments) Q^T, Q = rotation(angle, axis).
 /// A rattleback's principal axes turned by delta about the vertical e3: (moments, e3, delta).
+/// The result is symmetric exactly (J_ji = J_ij to the bit).
 /// `axis` need not be unit (it is normalised); std::invalid_argument if it is zero or not finite.
 [[nodiscard]] Eigen::Matrix3d inertia_from_principal(const Eigen::Vector3d& moments, const Eigen::Vector3d& axis,
                                                      double angle);

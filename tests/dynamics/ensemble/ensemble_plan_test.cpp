@@ -8,6 +8,8 @@
 #include <set>
 #include <stdexcept>
 
+#include "dynamics/rigid_rolling/inertia_misalignment.h"
+
 namespace frictionlab::dynamics::ensemble {
 namespace {
 
@@ -128,6 +130,41 @@ scale = "log"
   EXPECT_NEAR(p.start_values(0)[1], 0.1, 1e-15);
   EXPECT_NEAR(p.start_values(1)[0], 0.5, 1e-15);  // 0.75
   EXPECT_NEAR(p.scenario({1, 0, 0}).contact.k, std::pow(10.0, -2.0 + 0.25 * 2.0), 1e-15);
+}
+
+// body.misalignment reaches the run through the base scenario's body: the run's tensor is the
+// base's turned to the start's angle (measured by the rigid_rolling module's own convention), the
+// same for every replica and law of the start, and its resolved scenario writes it.
+TEST(EnsemblePlan, AMisalignmentStartTurnsTheBaseBodysInertia) {
+  const EnsemblePlan p = EnsemblePlan::make(study(R"(scenario = "../scenarios/rattleback-reversal.toml"
+laws = ["exact", "ellipsoidal"]
+[[vary]]
+key = "body.misalignment"
+values = [0.03, -0.005]
+[replicas]
+count = 2
+size = 1e-6
+)"));
+  const Eigen::Matrix3d base = p.base().body.inertia;
+  for (const long start : {0L, 1L}) {
+    const double delta = start == 0 ? 0.03 : -0.005;
+    const Scenario s = p.scenario({.start = start, .replica = 1, .law = 1});
+    EXPECT_NEAR(rigid_rolling::misalignment_angle(s.body.inertia), delta, 1e-14);
+    EXPECT_NEAR(s.body.inertia.trace(), base.trace(), 1e-15 * base.trace()) << "the moments kept";
+    EXPECT_EQ(s.body.inertia(2, 2), base(2, 2));
+    EXPECT_EQ(p.scenario({start, 0, 0}).body.inertia, s.body.inertia);
+    EXPECT_EQ(ScenarioDocument::parse(s.resolved_toml, "resolved").resolve().body.inertia, s.body.inertia)
+        << "the resolved scenario reproduces the tensor to the bit";
+  }
+  // A body of revolution has equal horizontal moments: nothing to turn, an error before any run.
+  try {
+    (void)EnsemblePlan::make(study("scenario = \"../scenarios/egg-printed-a.toml\"\nlaws = [\"exact\"]\n[[vary]]\n"
+                                   "key = \"body.misalignment\"\nvalues = [0.01]\n"));
+    ADD_FAILURE() << "the egg accepted body.misalignment";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("vary[0] = 'body.misalignment'"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("J11 = J22"), std::string::npos) << e.what();
+  }
 }
 
 TEST(EnsemblePlan, BadKeysLawsAndScenariosAreOneLineNamingThem) {

@@ -84,6 +84,15 @@ TEST(DynShapesSolidMassProperties, InertiaFromPrincipalTurnsTheAxes) {
   EXPECT_THROW((void)inertia_from_principal({I1, I2, I3}, Eigen::Vector3d::Zero(), 0.1), std::invalid_argument);
 }
 
+// Written out as a scenario's body.inertia, the tensor must read back symmetric to the bit.
+TEST(DynShapesSolidMassProperties, InertiaFromPrincipalIsExactlySymmetric) {
+  for (const double delta : {-0.7, -0.06, -0.0143, 0.005, 0.03, 0.7})
+    for (const Eigen::Vector3d& axis : {Eigen::Vector3d(0.0, 0.0, 1.0), Eigen::Vector3d(1.0, 2.0, 3.0)}) {
+      const Eigen::Matrix3d J = inertia_from_principal({2e-4, 16e-4, 17e-4}, axis, delta);
+      EXPECT_EQ(J, J.transpose()) << delta << " about " << axis.transpose();
+    }
+}
+
 std::string error_of(const Eigen::Matrix3d& J) {
   try {
     validate_inertia(J, "body.inertia");
