@@ -18,11 +18,29 @@ import sys
 from collections import defaultdict
 
 
+class Cells(defaultdict):
+    key = "contact.lambda"
+
+
+def varied_key(fieldnames):
+    """The study's varied key beside initial.omega3: runs.csv lists the varied keys between `law`
+    and `reason` (contact.lambda for rattleback-map, body.misalignment for
+    rattleback-misalignment)."""
+    keys = fieldnames[fieldnames.index("law") + 1:fieldnames.index("reason")]
+    others = [k for k in keys if k != "initial.omega3"]
+    if len(others) != 1 or "initial.omega3" not in keys:
+        raise SystemExit(f"rattleback_map.py: error: expected initial.omega3 and one other varied key, got {keys}")
+    return others[0]
+
+
 def load(path):
-    cells = defaultdict(list)  # (law, lambda, omega3) -> rows
+    cells = Cells(list)  # (law, x, omega3) -> rows
     with open(path, newline="") as f:
-        for r in csv.DictReader(f):
-            cells[(r["law"], float(r["contact.lambda"]), float(r["initial.omega3"]))].append(r)
+        reader = csv.DictReader(f)
+        key = varied_key(reader.fieldnames)
+        for r in reader:
+            cells[(r["law"], float(r[key]), float(r["initial.omega3"]))].append(r)
+    cells.key = key
     return cells
 
 
@@ -36,7 +54,7 @@ def table(cells, laws):
     out = []
     for law in laws:
         out.append(f"\n{law}: first reversal time (s), or how the run ended; `|` separates replicas that differ\n")
-        out.append("| omega3 (1/s) | " + " | ".join(f"{l:.3g}" for l in lams) + " |")
+        out.append(f"| omega3 (1/s) \\ {getattr(cells, 'key', 'contact.lambda')} | " + " | ".join(f"{l:.3g}" for l in lams) + " |")
         out.append("|---" * (len(lams) + 1) + "|")
         for w in spins:
             row = []
@@ -63,13 +81,14 @@ def main(argv):
 
     lams = sorted({k[1] for k in cells})
     spins = sorted({k[2] for k in cells})
+    log_x = cells.key == "contact.lambda"
     fig, axes = plt.subplots(1, len(laws), figsize=(3.2 * len(laws), 3.6), sharey=True)
     for ax, law in zip(axes, laws):
         for (lw, l, w), rows in cells.items():
             if lw != law:
                 continue
             ns = {reversals(r) for r in rows}
-            x, y = math.log10(l), spins.index(w)
+            x, y = (math.log10(l) if log_x else l), spins.index(w)
             if len(ns) > 1:
                 ax.plot(x, y, "kx", ms=9)
             else:
@@ -87,9 +106,12 @@ def main(argv):
                     ax.annotate(f"{float(rows[0]['t_first_reversal']):.1f}", (x, y), textcoords="offset points",
                                 xytext=(0, 7), ha="center", fontsize=7)
         ax.set_title(law, fontsize=9)
-        ax.set_xlabel("log10 lambda (N/m^1.5)")
-        ax.set_xticks([math.log10(l) for l in lams[::2]])
-        ax.set_xticklabels([f"{math.log10(l):.1f}" for l in lams[::2]])
+        if log_x:
+            ax.set_xlabel("log10 lambda (N/m^1.5)")
+            ax.set_xticks([math.log10(l) for l in lams[::2]])
+            ax.set_xticklabels([f"{math.log10(l):.1f}" for l in lams[::2]])
+        else:
+            ax.set_xlabel(cells.key + (" (rad)" if cells.key == "body.misalignment" else ""))
         ax.set_ylim(-0.6, len(spins) - 0.4)
         ax.grid(alpha=0.3)
     axes[0].set_yticks(range(len(spins)))

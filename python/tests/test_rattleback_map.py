@@ -56,7 +56,7 @@ def test_the_script_writes_the_figure_and_prints_the_tables(tmp_path):
     r = subprocess.run([sys.executable, SCRIPT, str(runs), str(png)], capture_output=True, text=True)
     assert r.returncode == 0, r.stderr
     assert png.stat().st_size > 1000
-    assert r.stdout.count("| omega3 (1/s) |") == 2
+    assert r.stdout.count("| omega3 (1/s) \\ contact.lambda |") == 2
 
 
 def test_wrong_arguments_give_the_usage_and_exit_2():
