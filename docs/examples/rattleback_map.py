@@ -116,10 +116,10 @@ def main(argv):
         ax.grid(alpha=0.3)
     axes[0].set_yticks(range(len(spins)))
     axes[0].set_yticklabels([f"{w:+g}" for w in spins])
-    axes[0].set_ylabel("initial spin omega3 (1/s; + reverses fast)")
-    fig.suptitle("Kane & Levinson rattleback, k = 0.3. Reversed: filled circle (first time, s), triangle 2+. "
-                 "Not reversed: circle rest, diamond rocks on (rolling), grey square undecided (step budget or "
-                 "t_end), star law pole; x replicas differ", fontsize=7)
+    axes[0].set_ylabel("initial spin omega3 (1/s; + counter-clockwise)")
+    fig.suptitle("Kane & Levinson rattleback, k = 0.3. Reversed: filled circle (first time, s), triangle 2+.\n"
+                 "Not reversed: circle rest, diamond rocks on (rolling), grey square undecided (step budget, "
+                 "t_end or chatter), star law pole; x replicas differ", fontsize=7)
     fig.tight_layout()
     fig.savefig(argv[2], dpi=110)
     return 0
