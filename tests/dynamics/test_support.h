@@ -134,6 +134,17 @@ inline dynamics::Body sphere_body(double radius, double mass) {
   return dynamics::make_body(spec);
 }
 
+/// A homogeneous disk with a toroidal rim (docs/convex-bodies.md §5): centre circle R, rim radius
+/// rho (m), mass (kg).
+inline dynamics::Body toroidal_disk_body(double radius, double rim_radius, double mass) {
+  dynamics::BodySpec spec;
+  spec.shape = "toroidal-disk";
+  spec.shape_parameters["radius"] = {radius};
+  spec.shape_parameters["rim_radius"] = {rim_radius};
+  spec.mass = mass;
+  return dynamics::make_body(spec);
+}
+
 /// One of the paper's eggs (docs/model.md), m = 2 kg.
 inline dynamics::Body egg_body(const std::string& preset) {
   dynamics::BodySpec spec;

@@ -83,15 +83,6 @@ Body ellipsoid_body(const Eigen::Vector3d& semi_axes, double mass, const Eigen::
   return b;
 }
 
-Body disk_body(double R, double rho, double mass) {
-  BodySpec spec;
-  spec.shape = "toroidal-disk";
-  spec.shape_parameters["radius"] = {R};
-  spec.shape_parameters["rim_radius"] = {rho};
-  spec.mass = mass;
-  return make_body(spec);
-}
-
 // With patch = "hertz", E* = 5e7 Pa gives these few-centimetre bodies a stiffness near lambda = 1e7
 // N/m^1.5 (N = (4/3) E* sqrt(R) delta^1.5 for a sphere).
 PlaneContact plane(double k, PatchModel patch, double lambda = 1e7, double E_star = 5e7) {
@@ -233,7 +224,7 @@ TEST(DynConvexBodyMotion, FrictionlessTriaxialEllipsoidConservesEnergy) {
 }
 
 TEST(DynConvexBodyMotion, FrictionlessDiskConservesEnergy) {
-  const Body body = disk_body(0.02, 0.003, 0.05);
+  const Body body = testing::toroidal_disk_body(0.02, 0.003, 0.05);
   const StateVector x0 =
       make_state({0.0, -0.3, 0.0}, {2.0, 0.5, -15.0}, Eigen::Vector3d(0.95, 0.1, 0.25).normalized(), -5e-6);
   expect_energy_conserved(body, x0, 0.003, 2.0, "disk");
@@ -269,7 +260,7 @@ TEST(DynConvexBodyMotion, FrictionNeverAddsEnergyAndBalancesItsWork) {
   expect_energy_balanced(make_body(spec), make_state({0.2, -0.1, 0.0}, {4.0, -6.0, 25.0},
                                                      Eigen::Vector3d(0.3, -0.2, 0.93).normalized(), -1e-5),
                          "ellipsoid");
-  expect_energy_balanced(disk_body(0.02, 0.003, 0.05),
+  expect_energy_balanced(testing::toroidal_disk_body(0.02, 0.003, 0.05),
                          make_state({0.1, -0.3, 0.0}, {2.0, 0.5, -15.0}, Eigen::Vector3d(0.95, 0.1, 0.25).normalized(),
                                     -5e-6),
                          "disk");
@@ -388,7 +379,7 @@ TEST(DynConvexBodyMotion, PoseChangesNoOtherComponent) {
 // pushed over on its rim falls flat.
 TEST(DynConvexBodyMotion, DiskFallingFlatStopsAtTheFlatFaceEvent) {
   const auto law = friction::make_law("exact");
-  const BodyOnPlane sys(disk_body(0.02, 0.003, 0.05), plane(0.3, PatchModel::section), *law);
+  const BodyOnPlane sys(testing::toroidal_disk_body(0.02, 0.003, 0.05), plane(0.3, PatchModel::section), *law);
   // Pushed over (so that it does not start at rest), then left to fall.
   const StateVector x0 = make_state(Eigen::Vector3d::Zero(), Eigen::Vector3d(0.0, 4.0, 1.0),
                                     Eigen::Vector3d(0.8, 0.0, 0.6), PlaneContact{0.3, 1e7, 9.81}.static_height(0.05 * 9.81));

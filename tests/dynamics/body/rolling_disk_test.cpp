@@ -37,6 +37,7 @@
 #include "dynamics/body/simulation.h"
 #include "dynamics/rigid_rolling/steady_circle.h"
 #include "friction/registry.h"
+#include "tests/dynamics/test_support.h"
 
 namespace frictionlab::dynamics {
 namespace {
@@ -50,14 +51,7 @@ constexpr double kK = 0.3;
 // stay a perturbation of the circle at every lambda used (the largest deviation, at 1e8, is 21 % of beta).
 constexpr double kSpan = 0.3;
 
-Body disk_body() {
-  BodySpec spec;
-  spec.shape = "toroidal-disk";
-  spec.shape_parameters["radius"] = {kR};
-  spec.shape_parameters["rim_radius"] = {kRho};
-  spec.mass = kMass;
-  return make_body(spec);
-}
+Body disk_body() { return testing::toroidal_disk_body(kR, kRho, kMass); }
 
 // The rigid model's body with the same mass properties (its radius is the outer one, R + rho).
 rigid_rolling::RevolutionBody rigid_disk(const Body& body) {
