@@ -68,9 +68,11 @@ const std::vector<StateVector>& case_a_states() {
   return states;
 }
 
-void time_rhs(benchmark::State& state, const std::string& spec, const dynamics::PlaneContact& plane) {
+// The right-hand side of `body` on `plane` with the law `spec`, over the egg's case-a states in turn.
+void time_body_rhs(benchmark::State& state, const std::string& spec, const dynamics::Body& body,
+                   const dynamics::PlaneContact& plane) {
   const auto law = friction::make_law(spec);
-  const dynamics::BodyOnPlane sys(egg_printed(), plane, *law);
+  const dynamics::BodyOnPlane sys(body, plane, *law);
   const auto& xs = case_a_states();
   StateVector d;
   std::size_t i = 0;
@@ -80,6 +82,10 @@ void time_rhs(benchmark::State& state, const std::string& spec, const dynamics::
     if (++i == xs.size()) i = 0;
   }
   state.SetItemsProcessed(state.iterations());
+}
+
+void time_rhs(benchmark::State& state, const std::string& spec, const dynamics::PlaneContact& plane) {
+  time_body_rhs(state, spec, egg_printed(), plane);
 }
 
 void BM_rhs(benchmark::State& state, const std::string& spec) { time_rhs(state, spec, kPlane); }
@@ -102,18 +108,8 @@ dynamics::PlaneContact matched_hertz_plane(const dynamics::Body& body) {
 }
 
 void time_ellipsoid_rhs(benchmark::State& state, const std::string& spec, bool hertz) {
-  const auto law = friction::make_law(spec);
   const dynamics::Body body = triaxial_ellipsoid();
-  const dynamics::BodyOnPlane sys(body, hertz ? matched_hertz_plane(body) : kPlane, *law);
-  const auto& xs = case_a_states();
-  StateVector d;
-  std::size_t i = 0;
-  for (auto _ : state) {
-    sys(0.0, xs[i], d);
-    benchmark::DoNotOptimize(d);
-    if (++i == xs.size()) i = 0;
-  }
-  state.SetItemsProcessed(state.iterations());
+  time_body_rhs(state, spec, body, hertz ? matched_hertz_plane(body) : kPlane);
 }
 
 void BM_rhs_ellipsoid(benchmark::State& state, const std::string& spec) { time_ellipsoid_rhs(state, spec, false); }
