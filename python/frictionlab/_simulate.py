@@ -26,8 +26,10 @@ class SimulationResult:
         One array per column of trajectory.csv, in its order (SI units, body frame): t (s),
         gamma1..3, omega1..3 (1/s), v1..3 (m/s), eps (m), N (N), U (m/s), Omega (1/s), F1, F2
         (N), M (N m), a, b (m), psi (rad), energy, kinetic, W_slide, W_spin (J), in_contact
-        (bool), and the pose: x, y (m, the centre of mass on the plane, world axes), qw, qx, qy,
-        qz (the orientation quaternion, body to world). One element per sample (every run.output_dt seconds, and the final time).
+        (bool), stick (bool: rolling without slip and spin, docs/dynamics.md §5), and the pose:
+        x, y (m, the centre of mass on the plane, world axes), qw, qx, qy, qz (the orientation
+        quaternion, body to world). One element per sample (every run.output_dt seconds, and the
+        final time).
     scenario_toml : str
         The resolved scenario (scenario.toml beside the run): rerunning it reproduces the run.
     out : str or None
