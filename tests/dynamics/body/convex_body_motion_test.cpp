@@ -119,6 +119,19 @@ double max_difference(const Recorder& a, const Recorder& b, double speed, double
 constexpr double kSphereAgreement = 1e-12;
 constexpr double kSpheroidAgreement = 1e-9;
 
+// Runs both systems from x0 on the same fixed steps for 1 s and asks that they take the same steps
+// and stay within `tol`, each part of the state relative to its scale for a body of size `size`.
+void expect_same_motion(const BodyOnPlane& a, const BodyOnPlane& b, const StateVector& x0, double size, double tol,
+                        const std::string& what) {
+  Recorder ra, rb;
+  const RunSummary sa = simulate(a, x0, fixed_steps(1.0, 0.01), &ra);
+  const RunSummary sb = simulate(b, x0, fixed_steps(1.0, 0.01), &rb);
+  ASSERT_EQ(sa.reason, Termination::t_end) << what << ": " << sa.message;
+  ASSERT_EQ(sb.reason, Termination::t_end) << what << ": " << sb.message;
+  EXPECT_EQ(sa.steps, sb.steps) << what;
+  EXPECT_LT(max_difference(ra, rb, std::sqrt(9.81 * size), std::sqrt(9.81 / size), size), tol) << what;
+}
+
 TEST(DynConvexBodyMotion, SphereAsEllipsoidFollowsTheSphereOfRevolution) {
   const auto law = friction::make_law("exact");
   constexpr double R = 0.05, m = 1.0, I = 0.4 * m * R * R;
@@ -129,18 +142,10 @@ TEST(DynConvexBodyMotion, SphereAsEllipsoidFollowsTheSphereOfRevolution) {
   const Body sphere = revolution_body(rev, 0.0, I, I);
   const Body ellipsoid = ellipsoid_body({R, R, R}, m, Eigen::Vector3d::Zero(), Eigen::Matrix3d::Identity() * I);
   for (const PatchModel patch : {PatchModel::section, PatchModel::hertz}) {
-    const BodyOnPlane a(sphere, plane(0.2, patch), *law);
-    const BodyOnPlane b(ellipsoid, plane(0.2, patch), *law);
     const StateVector x0 = make_state({0.2, 0.05, 0.0}, {3.0, -2.0, 20.0}, Eigen::Vector3d(0.3, 0.1, 0.95).normalized(),
                                       -2e-5);
-    Recorder ra, rb;
-    const RunSummary sa = simulate(a, x0, fixed_steps(1.0, 0.01), &ra);
-    const RunSummary sb = simulate(b, x0, fixed_steps(1.0, 0.01), &rb);
-    ASSERT_EQ(sa.reason, Termination::t_end) << sa.message;
-    ASSERT_EQ(sb.reason, Termination::t_end) << sb.message;
-    EXPECT_EQ(sa.steps, sb.steps);
-    EXPECT_LT(max_difference(ra, rb, std::sqrt(9.81 * R), std::sqrt(9.81 / R), R), kSphereAgreement)
-        << (patch == PatchModel::hertz ? "hertz" : "section");
+    expect_same_motion(BodyOnPlane(sphere, plane(0.2, patch), *law), BodyOnPlane(ellipsoid, plane(0.2, patch), *law),
+                       x0, R, kSphereAgreement, patch == PatchModel::hertz ? "hertz" : "section");
   }
 }
 
@@ -171,16 +176,9 @@ TEST(DynConvexBodyMotion, SpheroidAsEllipsoidFollowsTheSpheroidOfRevolution) {
       {"tilted", make_state({0.05, 0.0, 0.0}, {2.0, -1.0, 15.0}, Eigen::Vector3d(0.6, 0.3, 0.74).normalized(), -3e-5)}};
   for (const auto& [name, x0] : starts) {
     for (const PatchModel patch : {PatchModel::section, PatchModel::hertz}) {
-      const BodyOnPlane ra_sys(same, plane(0.1, patch), *law);
-      const BodyOnPlane rb_sys(ellipsoid, plane(0.1, patch), *law);
-      Recorder ra, rb;
-      const RunSummary sa = simulate(ra_sys, x0, fixed_steps(1.0, 0.01), &ra);
-      const RunSummary sb = simulate(rb_sys, x0, fixed_steps(1.0, 0.01), &rb);
-      ASSERT_EQ(sa.reason, Termination::t_end) << sa.message;
-      ASSERT_EQ(sb.reason, Termination::t_end) << sb.message;
-      EXPECT_EQ(sa.steps, sb.steps);
-      EXPECT_LT(max_difference(ra, rb, std::sqrt(9.81 * c_pol), std::sqrt(9.81 / c_pol), c_pol), kSpheroidAgreement)
-          << name << (patch == PatchModel::hertz ? " hertz" : " section");
+      expect_same_motion(BodyOnPlane(same, plane(0.1, patch), *law), BodyOnPlane(ellipsoid, plane(0.1, patch), *law),
+                         x0, c_pol, kSpheroidAgreement,
+                         std::string(name) + (patch == PatchModel::hertz ? " hertz" : " section"));
     }
   }
 }
