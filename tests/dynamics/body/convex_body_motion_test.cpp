@@ -306,15 +306,20 @@ TEST(DynConvexBodyMotion, FullInertiaTensorMatchesTheBodyInItsPrincipalAxes) {
 }
 
 // ---------------------------------------------------------------------------------------------
-// The pose. Its quaternion is integrated apart from gamma; both describe the same turning, so the
-// vertical seen from the body, R(q)^T e_z, stays gamma to the integration's accuracy.
-TEST(DynConvexBodyMotion, OrientationQuaternionAgreesWithTheIntegratedVertical) {
-  const auto law = friction::make_law("exact");
+// A homogeneous triaxial ellipsoid of a few centimetres (0.05 x 0.035 x 0.02 m, 0.3 kg).
+Body small_ellipsoid() {
   BodySpec spec;
   spec.shape = "ellipsoid";
   spec.shape_parameters["semi_axes"] = {0.05, 0.035, 0.02};
   spec.mass = 0.3;
-  const BodyOnPlane sys(make_body(spec), plane(0.2, PatchModel::section), *law);
+  return make_body(spec);
+}
+
+// The pose. Its quaternion is integrated apart from gamma; both describe the same turning, so the
+// vertical seen from the body, R(q)^T e_z, stays gamma to the integration's accuracy.
+TEST(DynConvexBodyMotion, OrientationQuaternionAgreesWithTheIntegratedVertical) {
+  const auto law = friction::make_law("exact");
+  const BodyOnPlane sys(small_ellipsoid(), plane(0.2, PatchModel::section), *law);
   StateVector x0 = make_state({0.2, -0.1, 0.0}, {4.0, -6.0, 25.0}, Eigen::Vector3d(0.3, -0.2, 0.93).normalized(), -1e-5);
   orientation(x0) = orientation_from(vertical(x0), 1.2);  // any heading
   Recorder rec;
@@ -352,11 +357,7 @@ TEST(DynConvexBodyMotion, SlidingSpherePathFollowsTheClosedForm) {
 // and heading has every other component equal to the last bit, with the same steps.
 TEST(DynConvexBodyMotion, PoseChangesNoOtherComponent) {
   const auto law = friction::make_law("exact");
-  BodySpec spec;
-  spec.shape = "ellipsoid";
-  spec.shape_parameters["semi_axes"] = {0.05, 0.035, 0.02};
-  spec.mass = 0.3;
-  const BodyOnPlane sys(make_body(spec), plane(0.2, PatchModel::hertz), *law);
+  const BodyOnPlane sys(small_ellipsoid(), plane(0.2, PatchModel::hertz), *law);
   const StateVector x0 = make_state({0.2, -0.1, 0.0}, {4.0, -6.0, 25.0}, Eigen::Vector3d(0.3, -0.2, 0.93).normalized(), -1e-5);
   StateVector moved = x0;
   position(moved) = Eigen::Vector2d(3.0, -7.0);
