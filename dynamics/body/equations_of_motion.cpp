@@ -155,6 +155,7 @@ void BodyOnPlane::contact_state(const StateVector& x, ContactState& c, bool with
     c.b = patch.b;
     if (with_friction) add_friction(c, c.e1, law_.evaluate({c.U, c.Omega, c.a, c.b, c.psi, c.N, plane_.k}));
   }
+  c.slide_power = c.friction.F1 * c.U;
 }
 
 void BodyOnPlane::add_friction(ContactState& c, const Eigen::Vector3d& e1, const friction::FrictionForces& f) {
@@ -182,7 +183,7 @@ void BodyOnPlane::derivatives(const StateVector& x, const ContactState& c, State
   }
   vertical(dxdt) = vertical(x).cross(w);                                                // Eq. (4)
   height(dxdt) = c.u.dot(c.gamma);                                                      // Eq. (5)
-  slide_work(dxdt) = c.friction.F1 * c.U;
+  slide_work(dxdt) = c.slide_power;
   spin_work(dxdt) = c.friction.M * c.Omega;
   // The pose, not fed back: q' = q (0, omega)/2; X' = horizontal part of R(q) v.
   const auto q = orientation(x);

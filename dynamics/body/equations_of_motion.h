@@ -77,6 +77,9 @@ struct ContactState {
   friction::PatchAngle psi;  ///< from e1 to the major axis: its direction (cos, sin) as the law
                              ///< reads it; psi.radians() in [0, pi), formed only when asked for
   friction::FrictionForces friction;  ///< F1, F2 (N), M (N m); zero out of contact
+  /// The power the friction force takes from the slip, -F.u_t (W): F1 U where e1 is the slip's
+  /// direction; in the stick and creep modes, where e1 is not, the dot product itself.
+  double slide_power = 0.0;
   Eigen::Vector3d force;   ///< total contact force N gamma + F, body frame, N
   Eigen::Vector3d torque;  ///< contact torque about the centre of mass, N m
 };
@@ -89,10 +92,10 @@ struct BodyMode {
   /// Stick: the contact rolls without slip and without spin; the friction is the wrench that keeps
   /// it so (dynamics/body/stick.h), not the law's.
   bool stick = false;
-  /// Left stick: while the slip and the spin are both below their floors (U < departure_slip,
-  /// |Omega| < departure_spin), the law is evaluated in the direction of the exit (the
-  /// maximum-dissipation direction at the boundary of its limit set, dynamics/core/limit_set.h),
-  /// not in the direction of the rounding residue of U and Omega.
+  /// Creep at the limit (after an exit from stick or a refused entry): while the slip and the spin
+  /// are both below their floors (U < departure_slip, |Omega| < departure_spin: the stagnation
+  /// region), the law is evaluated in the direction of creep (dynamics/core/limit_set.h), which the
+  /// monitor updates between steps, not in the slip's own direction, whose dynamics is stiff there.
   bool departing = false;
   double departure_alpha = 0.0;  ///< slip direction from the major axis, rad
   double departure_beta = 0.0;   ///< elevation, tan beta = a Omega / U, rad

@@ -98,36 +98,17 @@ class BodyOnPlane::Monitor {
       return After::stopped;
     }
     if (mode.stick) return stick_step(t, x, c, mode, stop);
+    // Creep (docs/dynamics.md §5): out of the stagnation region the slip's own direction is stiff no
+    // more and the law sees it again.
+    if (mode.departing && !s.rest.contact_stagnant(c.in_contact, c.U, c.Omega)) mode.departing = false;
     if (stick_may_enter(t, x, c)) {
       // Entry is tried at every step (a refusal costs one law evaluation when the wrench is outside
       // in the direction of the latest test); refused (the wrench it needs is outside the law's
-      // limit set), the contact creeps at the limit, where the law's slip is stiff (rate
-      // ~ k g/(a |Omega|)): after a total of run.stick_hold_time of creep since the contact last
-      // left the stagnation region the run stops "stagnation" (docs/dynamics.md §5).
-      if (enter_stick(t, x, c, mode)) {
-        if (creep_steps_ > 0) creep_time_ += t - creep_since_;
-        creep_steps_ = 0;
-        return After::jumped;
-      }
-      if (creep_steps_++ == 0) creep_since_ = t;
-      if (creep_time_ + (t - creep_since_) >= s.stick_hold.value) {
-        stop(Termination::stagnation,
-             "the contact has stayed in the stagnation region (U = " + message_number(c.U) + " m/s, |Omega| = " +
-                 message_number(std::abs(c.Omega)) + " 1/s) since t = " + message_number(creep_since_) + " s (" +
-                 std::to_string(creep_steps_) +
-                 " steps) in settled contact while stick could not hold it (the friction wrench rolling needs "
-                 "lies outside the law's limit set; " + std::to_string(s.stick_entries) + " entries, " +
-                 std::to_string(s.stick_exits) + " exits): the law's slip at the limit is stiff there");
-        s.rule = "in settled contact, U < run.rest_slip_speed and |Omega| < run.rest_spin, stick refused (its "
-                 "wrench outside the law's limit set), at every step for run.stick_hold_time";
-        s.thresholds = {s.stick_hold, s.settle.time, s.settle.normal_speed, s.rest.slip_speed, s.rest.spin};
-        return After::stopped;
-      }
-      return After::go_on;
+      // limit set), the contact creeps at the limit in the direction of creep, which follows the
+      // wrench from step to step (docs/dynamics.md §5).
+      if (enter_stick(t, x, c, mode)) return After::jumped;
+      return creep(x, c, mode);
     }
-    // Out of the stagnation region (or not settled): the creep's count starts again.
-    creep_steps_ = 0;
-    if (!mode.stick) creep_time_ = 0.0;
     if (settled && options_.stop_when_rolling && s.rest.contact_stagnant(c.in_contact, c.U, c.Omega)) {
       stop(Termination::rolling, "the contact, settled since t = " + message_number(settling_.since()) +
                                      " s, neither slips (U = " + message_number(c.U) +
@@ -243,8 +224,8 @@ class BodyOnPlane::Monitor {
       mode.departing = true;
       mode.departure_alpha = exit_.direction.alpha;
       mode.departure_beta = exit_.direction.beta;
-      mode.departure_slip = kDepartureFloorFactor * s.rest.slip_speed.value;
-      mode.departure_spin = kDepartureFloorFactor * s.rest.spin.value;
+      mode.departure_slip = s.rest.slip_speed.value;
+      mode.departure_spin = s.rest.spin.value;
       return After::jumped;
     }
     if (c.U > kStickDriftFactor * s.rest.slip_speed.value || std::abs(c.Omega) > kStickDriftFactor * s.rest.spin.value) {
@@ -274,10 +255,60 @@ class BodyOnPlane::Monitor {
     return After::go_on;
   }
 
+  // Creep at the limit, after a refused entry: on the first such step the residue of slip and spin
+  // is removed (as at an entry: its energy counts as friction work) and the law is evaluated in
+  // the direction of creep from then on (BodyMode::departing), where the slip grows along its own
+  // direction; on later steps that direction follows the wrench (a local search from the last).
+  After creep(StateVector& x, const ContactState& c, BodyMode& mode) {
+    if (!mode.departing) {
+      StateVector y = x;
+      project(y, c);
+      BodyMode held = mode;
+      held.stick = true;
+      const LimitSetTest test = stick_test(y, held);
+      if (test.inside()) return After::go_on;  // the quick test of the entry erred: retry next step
+      x = y;
+      mode.departing = true;
+      mode.departure_slip = s_.rest.slip_speed.value;
+      mode.departure_spin = s_.rest.spin.value;
+      set_direction(mode, test.direction);
+      ++s_.creep_entries;
+      return After::jumped;
+    }
+    BodyMode held = mode;
+    held.stick = true;
+    held.departing = false;
+    const LimitSetTest test = stick_test(x, held, /*quick_reject=*/false, /*follow=*/true);
+    if (test.direction.alpha == mode.departure_alpha && test.direction.beta == mode.departure_beta) return After::go_on;
+    set_direction(mode, test.direction);
+    return After::jumped;
+  }
+  void set_direction(BodyMode& mode, const SlipDirection& d) {
+    mode.departure_alpha = d.alpha;
+    mode.departure_beta = d.beta;
+    warm_ = d;
+  }
+
+  // The metric of the direction of creep at the contact c (dynamics/core/limit_set.h): Q = (S G S)^-1
+  // for the slip response G (dynamics/body/stick.h) in the patch frame (major axis, gamma x major,
+  // spin) and S = diag(1, 1, a), which scales it to the coordinates (u_t, a Omega).
+  Eigen::Matrix3d creep_metric(const ContactState& c) const {
+    StickProblem p;
+    p.mass = sys_.body().mass;
+    p.inertia = sys_.inertia_tensor();
+    p.r = c.point.r;
+    p.gamma = c.gamma;
+    const Eigen::Matrix3d G = slip_response(p, c.major);
+    const Eigen::DiagonalMatrix<double, 3> S(1.0, 1.0, c.a);
+    return (S * G * S).inverse();
+  }
+
   // The stick wrench at x (in stick) against the law's limit set; margin -inf out of contact.
   // With quick_reject, a negative margin in the direction of the latest test (one law evaluation)
   // answers "outside" at once: the entry attempts of a creeping contact cost that much.
-  LimitSetTest stick_test(const StateVector& x, const BodyMode& mode, bool quick_reject = false) {
+  // The direction returned is the direction of creep (weighted by creep_metric); with `follow`,
+  // only the local search from the latest direction runs.
+  LimitSetTest stick_test(const StateVector& x, const BodyMode& mode, bool quick_reject = false, bool follow = false) {
     ContactState c;
     sys_.contact(x, mode, c);
     LimitSetTest out;
@@ -296,7 +327,8 @@ class BodyOnPlane::Monitor {
         return out;
       }
     }
-    out = set.test(w, &warm_);
+    const Eigen::Matrix3d metric = creep_metric(c);
+    out = follow ? set.follow(w, warm_, metric) : set.test(w, &warm_, metric);
     s_.limit_set_evaluations += out.evaluations;
     return out;
   }
@@ -329,9 +361,6 @@ class BodyOnPlane::Monitor {
   long stagnant_unsettled_ = 0;  // accepted steps in a row in the stagnation region, not settled
   // Stick.
   static constexpr double kStickEnergyDrift = 1e-3;  // of run.rest_kinetic_energy: "constant" in the hold rule
-  long creep_steps_ = 0;          // steps in a row in the stagnation region with stick refused
-  double creep_since_ = 0.0;      // s, the first of them
-  double creep_time_ = 0.0;       // s, crept in earlier runs of such steps since the region was entered
   double t_now_ = 0.0;
   double stick_since_ = 0.0;      // start of the current stick (or of its hold window)
   double energy_at_entry_ = 0.0;  // J, at stick_since_

@@ -20,9 +20,8 @@
 //               interior: the contact stopped slipping and spinning while the body still moves (a
 //               sliding sphere starts to roll; an egg rocks on its pole), in settled contact;
 //   stagnation  the contact stayed in the stagnation region for run.max_stagnant_steps steps in a
-//               row while its normal motion had not settled (a bounce reaching U = Omega = 0), or
-//               in settled contact while stick could not hold it (the wrench outside the law's
-//               limit set): the integrator can only chatter or creep with tiny steps there;
+//               row while its normal motion had not settled (a bounce reaching U = Omega = 0):
+//               the integrator can only chatter there;
 //   chatter     the slip (or the spin) stayed below its rest threshold while the other did not, with
 //               collapsed steps and repeated reversals, for run.max_chatter_steps steps in a row:
 //               a law discontinuous at U = 0 (or Omega = 0) chatters there (dynamics/core/chatter_watch.h);
@@ -68,7 +67,8 @@ struct RunSummary : RunSummaryOf<StateVector> {
   // Stick (docs/dynamics.md §5 "stick").
   long stick_entries = 0;       ///< entries into stick
   long stick_exits = 0;         ///< exits from stick (located: the wrench left the law's limit set)
-  long stick_projections = 0;   ///< projections of the residue of slip and spin (entries and drift)
+  long stick_projections = 0;   ///< projections of the residue of slip and spin (entries, creep, drift)
+  long creep_entries = 0;       ///< refused entries that started a creep at the limit
   double stick_time = 0.0;      ///< total time in stick, s
   double first_stick_entry = -1.0;  ///< s; -1: none
   double first_stick_exit = -1.0;   ///< s (located); -1: none

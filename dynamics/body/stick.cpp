@@ -14,9 +14,9 @@ struct Delassus {
   Eigen::Matrix3d J_inv;
 };
 
-Delassus delassus(const StickProblem& p) {
+Delassus delassus(const StickProblem& p, const Eigen::Vector3d& t1) {
   Delassus d;
-  d.t1 = p.gamma.unitOrthogonal();
+  d.t1 = t1;
   d.t2 = p.gamma.cross(d.t1);
   d.J_inv = p.inertia.inverse();
   const Eigen::Vector3d forces[3] = {d.t1, d.t2, Eigen::Vector3d::Zero()};
@@ -33,7 +33,7 @@ Delassus delassus(const StickProblem& p) {
 }  // namespace
 
 StickWrench stick_wrench(const StickProblem& p) {
-  const Delassus d = delassus(p);
+  const Delassus d = delassus(p, p.gamma.unitOrthogonal());
   const Eigen::Vector3d gamma_rate = p.gamma.cross(p.omega);  // eq. (4)
   // The tangential acceleration of the contact point and the spin acceleration without friction,
   // less what the constraint needs ((u.gamma) gamma' keeps the projected slip at zero as the
@@ -48,6 +48,14 @@ StickWrench stick_wrench(const StickProblem& p) {
   return w;
 }
 
+Eigen::Matrix3d slip_response(const StickProblem& p, const Eigen::Vector3d& t1) {
+  // Delassus's columns answer the force t_j on the body and the torque -gamma; resistance rho_j
+  // (j = 1, 2) pushes the body along -t_j, rho_3 turns it by -rho_3 gamma.
+  Eigen::Matrix3d G = delassus(p, t1).W;
+  G.col(2) = -G.col(2);
+  return G;
+}
+
 Eigen::Vector3d contact_point_rate(const Eigen::Vector3d& gamma, const Eigen::Vector3d& omega, double R1,
                                    const Eigen::Vector3d& d1, double R2) {
   const Eigen::Vector3d gamma_rate = gamma.cross(omega);
@@ -57,7 +65,7 @@ Eigen::Vector3d contact_point_rate(const Eigen::Vector3d& gamma, const Eigen::Ve
 }
 
 StickProjection stick_projection(const StickProblem& p) {
-  const Delassus d = delassus(p);
+  const Delassus d = delassus(p, p.gamma.unitOrthogonal());
   const Eigen::Vector3d c(d.t1.dot(p.u), d.t2.dot(p.u), p.gamma.dot(p.omega));
   const Eigen::Vector3d x = d.W.partialPivLu().solve(-c);
   const Eigen::Vector3d P = x[0] * d.t1 + x[1] * d.t2;

@@ -53,6 +53,15 @@ struct StickWrench {
 [[nodiscard]] Eigen::Vector3d contact_point_rate(const Eigen::Vector3d& gamma, const Eigen::Vector3d& omega,
                                                  double R1, const Eigen::Vector3d& d1, double R2);
 
+/// The response G of the contact's slip and spin accelerations to the friction as resistance, in
+/// the basis (t1, t2 = gamma x t1, spin) for a unit tangent t1: with the friction force on the
+/// body -(rho_1 t1 + rho_2 t2) at r and the torque -rho_3 gamma,
+///     (t1.u', t2.u', Omega') = c_free - G rho.
+/// G = B M^-1 B^T for the map B of the wrench to the body's velocities: symmetric positive
+/// definite (a homogeneous sphere, r = -R gamma: G = diag(1/m + R^2/J, 1/m + R^2/J, 1/J)).
+/// For p.mass, p.inertia, p.r, p.gamma.
+[[nodiscard]] Eigen::Matrix3d slip_response(const StickProblem& p, const Eigen::Vector3d& t1);
+
 /// The impulse that makes the slip and the spin zero at once (velocities jump, nothing else).
 struct StickProjection {
   Eigen::Vector3d dv = Eigen::Vector3d::Zero();      ///< velocity change, m/s

@@ -31,6 +31,8 @@ void BodyOnPlane::contact_in_mode(const StateVector& x, const BodyMode& mode, Co
     c.e1 = e1;
     c.psi = friction::PatchAngle::from_direction(cp, sp + 0.0);
     add_friction(c, e1, law_.evaluate({U, Omega, c.a, c.b, c.psi, c.N, plane_.k}));
+    const Eigen::Vector3d slip = c.u - c.u.dot(c.gamma) * c.gamma;  // not along e1 in general
+    c.slide_power = c.friction.F1 * e1.dot(slip) + c.friction.F2 * c.gamma.cross(e1).dot(slip);
     return;
   }
   contact_state(x, c, false);
@@ -52,8 +54,8 @@ void BodyOnPlane::contact_in_mode(const StateVector& x, const BodyMode& mode, Co
   const StickWrench w = stick_wrench(p);
   // The wrench in the law's terms, in the frame of zero slip (e1 the major axis, psi = 0): the slip
   // in stick is the integrator's residue, whose direction is rounding noise (out of the contact
-  // plane even, where the contact point moves along the normal). F = -F1 e1 - F2 e2; F1 U + M Omega
-  // stays the power of that residue to first order (~0).
+  // plane even, where the contact point moves along the normal). F = -F1 e1 - F2 e2; its power on
+  // the residue, -F.u_t, and M Omega are ~0.
   c.e1 = c.major;
   c.psi = friction::PatchAngle();
   const Eigen::Vector3d e2 = c.gamma.cross(c.e1);
@@ -62,6 +64,7 @@ void BodyOnPlane::contact_in_mode(const StateVector& x, const BodyMode& mode, Co
   f.F2 = -w.force.dot(e2);
   f.M = w.M;
   c.friction = f;
+  c.slide_power = -w.force.dot(c.u - c.u.dot(c.gamma) * c.gamma);
   c.force += w.force;
   c.torque += c.point.r.cross(w.force) - w.M * c.gamma;
 }

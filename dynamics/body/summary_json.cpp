@@ -107,6 +107,7 @@ support::Json summary_json(const Scenario& scenario, const RunSummary& s) {
                 {"first_entry_time", s.first_stick_entry >= 0.0 ? support::Json(s.first_stick_entry) : support::Json(nullptr)},
                 {"first_exit_time", s.first_stick_exit >= 0.0 ? support::Json(s.first_stick_exit) : support::Json(nullptr)},
                 {"projections", s.stick_projections},
+                {"creep_entries", s.creep_entries},
                 {"projection_loss", s.stick_projection_loss},
                 {"limit_set_evaluations", s.limit_set_evaluations},
                 {"hold_time", s.stick_hold.value}};

@@ -25,6 +25,21 @@ SlipDirection wrapped(SlipDirection d) {
   return d;
 }
 
+// The unit vector of d in the coordinates (x, y, a Omega).
+Eigen::Vector3d unit(const SlipDirection& d) {
+  const bool pole = std::abs(d.beta) >= 0.5 * kPi;
+  const double cb = pole ? 0.0 : std::cos(d.beta);
+  const double sb = pole ? std::copysign(1.0, d.beta) : std::sin(d.beta);
+  return {cb * std::cos(d.alpha), cb * std::sin(d.alpha), sb};
+}
+
+// 1/sqrt(d^T Q d): the weight of the margin at d (1 without a metric).
+double weight(const SlipDirection& d, const Eigen::Matrix3d* metric) {
+  if (!metric) return 1.0;
+  const Eigen::Vector3d u = unit(d);
+  return 1.0 / std::sqrt(u.dot(*metric * u));
+}
+
 }  // namespace
 
 LimitSet::LimitSet(const friction::FrictionLaw& law, double k, double N, double a, double b)
@@ -75,8 +90,12 @@ double LimitSet::margin(const PatchWrench& rho, const SlipDirection& d) const {
   return support(d) - dot;
 }
 
-SlipDirection LimitSet::nelder_mead(const PatchWrench& rho, SlipDirection start, double size, double& best,
-                                    long& evaluations) const {
+double LimitSet::objective(const PatchWrench& rho, const SlipDirection& d, const Eigen::Matrix3d* metric) const {
+  return margin(rho, d) * weight(d, metric);
+}
+
+SlipDirection LimitSet::nelder_mead(const PatchWrench& rho, const Eigen::Matrix3d* metric, SlipDirection start,
+                                    double size, double& best, long& evaluations) const {
   // Nelder-Mead on (alpha, beta) with the standard coefficients (reflection 1, expansion 2,
   // contraction 1/2, shrink 1/2).
   std::array<SlipDirection, 3> p = {start, wrapped({start.alpha + size, start.beta}),
@@ -84,7 +103,7 @@ SlipDirection LimitSet::nelder_mead(const PatchWrench& rho, SlipDirection start,
   std::array<double, 3> f{};
   long n = 0;
   for (int i = 0; i < 3; ++i) {
-    f[i] = margin(rho, p[i]);
+    f[i] = objective(rho, p[i], metric);
     ++n;
   }
   const auto order = [&] {
@@ -105,11 +124,11 @@ SlipDirection LimitSet::nelder_mead(const PatchWrench& rho, SlipDirection start,
       return wrapped({c.alpha + t * (p[2].alpha - c.alpha), c.beta + t * (p[2].beta - c.beta)});
     };
     const SlipDirection r = along(-1.0);
-    const double fr = margin(rho, r);
+    const double fr = objective(rho, r, metric);
     ++n;
     if (fr < f[0]) {
       const SlipDirection e = along(-2.0);
-      const double fe = margin(rho, e);
+      const double fe = objective(rho, e, metric);
       ++n;
       if (fe < fr) {
         p[2] = e;
@@ -126,7 +145,7 @@ SlipDirection LimitSet::nelder_mead(const PatchWrench& rho, SlipDirection start,
       continue;
     }
     const SlipDirection k = fr < f[2] ? along(-0.5) : along(0.5);
-    const double fk = margin(rho, k);
+    const double fk = objective(rho, k, metric);
     ++n;
     if (fk < std::min(fr, f[2])) {
       p[2] = k;
@@ -135,7 +154,7 @@ SlipDirection LimitSet::nelder_mead(const PatchWrench& rho, SlipDirection start,
     }
     for (int i = 1; i < 3; ++i) {
       p[i] = wrapped({0.5 * (p[0].alpha + p[i].alpha), 0.5 * (p[0].beta + p[i].beta)});
-      f[i] = margin(rho, p[i]);
+      f[i] = objective(rho, p[i], metric);
       ++n;
     }
   }
@@ -151,6 +170,25 @@ double LimitSet::margin_at(const PatchWrench& rho_SI, const SlipDirection& d) co
 }
 
 LimitSetTest LimitSet::test(const PatchWrench& rho_SI, const SlipDirection* warm) const {
+  return search(rho_SI, warm, nullptr);
+}
+
+LimitSetTest LimitSet::test(const PatchWrench& rho_SI, const SlipDirection* warm, const Eigen::Matrix3d& metric) const {
+  return search(rho_SI, warm, &metric);
+}
+
+LimitSetTest LimitSet::follow(const PatchWrench& rho_SI, const SlipDirection& warm, const Eigen::Matrix3d& metric) const {
+  LimitSetTest out;
+  if (degenerate_) {
+    out.margin = -std::numeric_limits<double>::infinity();
+    return out;
+  }
+  const PatchWrench rho{rho_SI.Fx / kN_, rho_SI.Fy / kN_, rho_SI.M / (kN_ * a_)};
+  out.direction = nelder_mead(rho, &metric, wrapped(warm), 1e-2, out.margin, out.evaluations);
+  return out;
+}
+
+LimitSetTest LimitSet::search(const PatchWrench& rho_SI, const SlipDirection* warm, const Eigen::Matrix3d* metric) const {
   LimitSetTest out;
   if (degenerate_) {
     out.margin = -std::numeric_limits<double>::infinity();
@@ -163,13 +201,45 @@ LimitSetTest LimitSet::test(const PatchWrench& rho_SI, const SlipDirection* warm
       out.direction = d;
     }
   };
-  // The pure-slip circle: D = kN there (friction/law.h), so the minimum is at alpha along rho_F.
+  // The pure-slip circle: D = kN there (friction/law.h), so the margin is 1 - rho_F.e(alpha): its
+  // minimum lies along rho_F; weighted, it is found on a grid of kCircleGrid angles refined by
+  // golden sections (no law evaluation).
   const SlipDirection slip{std::atan2(rho.Fy, rho.Fx), 0.0};
-  consider(margin(rho, slip), slip);
+  consider(objective(rho, slip, metric), slip);
   out.evaluations = 1;
+  if (metric) {
+    const auto on_circle = [&](double alpha) {
+      const SlipDirection d{alpha, 0.0};
+      return (1.0 - rho.Fx * std::cos(alpha) - rho.Fy * std::sin(alpha)) * weight(d, metric);
+    };
+    constexpr int kCircleGrid = 256;
+    const double h = 2.0 * kPi / kCircleGrid;
+    double best_alpha = 0.0;
+    double best = std::numeric_limits<double>::infinity();
+    for (int i = 0; i < kCircleGrid; ++i) {
+      const double f = on_circle(i * h);
+      if (f < best) {
+        best = f;
+        best_alpha = i * h;
+      }
+    }
+    double lo = best_alpha - h, hi = best_alpha + h;
+    const double phi = 0.5 * (std::sqrt(5.0) - 1.0);
+    while (hi - lo > kDirectionTolerance) {
+      const double x1 = hi - phi * (hi - lo), x2 = lo + phi * (hi - lo);
+      if (on_circle(x1) < on_circle(x2)) {
+        hi = x2;
+      } else {
+        lo = x1;
+      }
+    }
+    const SlipDirection d{0.5 * (lo + hi), 0.0};
+    consider(objective(rho, d, metric), d);
+    ++out.evaluations;
+  }
   for (const double pole : {0.5 * kPi, -0.5 * kPi}) {
     const SlipDirection d{0.0, pole};
-    consider(margin(rho, d), d);
+    consider(objective(rho, d, metric), d);
     ++out.evaluations;
   }
   // The grid off those lines.
@@ -179,7 +249,7 @@ LimitSetTest LimitSet::test(const PatchWrench& rho_SI, const SlipDirection* warm
     for (int j = 1; j <= kGridBeta; ++j) {
       for (const double sign : {1.0, -1.0}) {
         const SlipDirection d{2.0 * kPi * i / kGridAlpha, sign * 0.5 * kPi * j / (kGridBeta + 1)};
-        const double m = margin(rho, d);
+        const double m = objective(rho, d, metric);
         ++out.evaluations;
         if (m < grid_min) {
           grid_min = m;
@@ -190,10 +260,10 @@ LimitSetTest LimitSet::test(const PatchWrench& rho_SI, const SlipDirection* warm
   }
   consider(grid_min, grid_best);
   double m = 0.0;
-  SlipDirection d = nelder_mead(rho, grid_best, 0.5 * kPi / (kGridBeta + 1), m, out.evaluations);
+  SlipDirection d = nelder_mead(rho, metric, grid_best, 0.5 * kPi / (kGridBeta + 1), m, out.evaluations);
   consider(m, d);
   if (warm) {
-    d = nelder_mead(rho, wrapped(*warm), 1e-2, m, out.evaluations);
+    d = nelder_mead(rho, metric, wrapped(*warm), 1e-2, m, out.evaluations);
     consider(m, d);
   }
   return out;

@@ -31,9 +31,23 @@
 // smooth off the two lines handled in closed form). Cost: 3 + 160 + ~2 x 60-120 law evaluations
 // per test (docs/dynamics.md §5 gives the times).
 //
+// Creep at the boundary. Where the wrench rho* that rolling without slip and spin needs lies
+// outside the set, the contact slips at the boundary. With c = (u_t, a Omega) the slip and the
+// scaled spin and c' = c_free - G rho for the friction rho (G symmetric positive definite, the
+// slip response of the body, scaled like c and rho), a slip that grows along its own direction d,
+// c' = lambda d with lambda > 0, needs rho = rho(d) with rho* - rho(d) = lambda G^-1 d: rho(d) is
+// the projection of rho* on the set in the metric of G, and d maximises
+//     (rho*.d - D(d))^2 / (d^T G^-1 d)     (Fenchel's dual of that projection).
+// So the direction of creep minimises the weighted margin m(d)/sqrt(d^T Q d), Q = G^-1 (the
+// `metric` of test() and follow()); with Q = I (no metric) it is the margin's own minimum, the
+// direction for an isotropic body. The sign of the weighted margin is the margin's: membership
+// does not depend on the metric.
+//
 // Degenerate sets: with kN = 0 (no load, or k = 0) or a law without spin moment (D = 0 at pure
 // spin, e.g. decoupled:r_spin=0) the set has no interior: degenerate() is true and a caller must
 // not rely on it to hold a contact (the body's stick mode is then never entered).
+
+#include <Eigen/Core>
 
 #include "friction/law.h"
 
@@ -55,7 +69,8 @@ struct PatchWrench {
 
 /// The outcome of a membership test.
 struct LimitSetTest {
-  double margin = 0.0;          ///< min over directions of (D(d) - rho.d)/(kN); < 0 outside
+  double margin = 0.0;          ///< min over directions of (D(d) - rho.d)/(kN) (weighted by
+                                ///< 1/sqrt(d^T Q d) with a metric Q); < 0 outside
   SlipDirection direction;      ///< where the minimum is (the maximum-dissipation direction when
                                 ///< the wrench is on the boundary)
   long evaluations = 0;         ///< law evaluations spent
@@ -84,6 +99,13 @@ class LimitSet {
   /// Whether `rho` lies in the set: the minimum margin over directions and its direction,
   /// searched also from `warm` if given. A degenerate set gives margin -inf for any rho.
   [[nodiscard]] LimitSetTest test(const PatchWrench& rho, const SlipDirection* warm = nullptr) const;
+  /// The same with the margin weighted by 1/sqrt(d^T Q d) for the metric Q (symmetric positive
+  /// definite, in the coordinates (x, y, a Omega) of d): the minimising direction is then the
+  /// direction of creep for the slip response G = Q^-1 (see the header comment).
+  [[nodiscard]] LimitSetTest test(const PatchWrench& rho, const SlipDirection* warm, const Eigen::Matrix3d& metric) const;
+  /// Only the local search from `warm` (~60-120 law evaluations): the minimising direction follows
+  /// a wrench that moved little since the test that gave `warm`.
+  [[nodiscard]] LimitSetTest follow(const PatchWrench& rho, const SlipDirection& warm, const Eigen::Matrix3d& metric) const;
   /// The margin (D(d) - rho.d)/(kN) at one direction (one law evaluation): negative proves rho
   /// outside. -inf for a degenerate set.
   [[nodiscard]] double margin_at(const PatchWrench& rho, const SlipDirection& d) const;
@@ -91,8 +113,10 @@ class LimitSet {
  private:
   [[nodiscard]] friction::FrictionForces evaluate(const SlipDirection& d) const;
   [[nodiscard]] double margin(const PatchWrench& rho_per_kN, const SlipDirection& d) const;
-  SlipDirection nelder_mead(const PatchWrench& rho_per_kN, SlipDirection start, double size, double& best,
-                            long& evaluations) const;
+  [[nodiscard]] double objective(const PatchWrench& rho_per_kN, const SlipDirection& d, const Eigen::Matrix3d* metric) const;
+  [[nodiscard]] LimitSetTest search(const PatchWrench& rho_SI, const SlipDirection* warm, const Eigen::Matrix3d* metric) const;
+  SlipDirection nelder_mead(const PatchWrench& rho_per_kN, const Eigen::Matrix3d* metric, SlipDirection start,
+                            double size, double& best, long& evaluations) const;
 
   const friction::FrictionLaw& law_;
   double k_, N_, a_, b_, kN_;

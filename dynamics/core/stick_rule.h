@@ -10,8 +10,9 @@
 //   drift       in stick the constrained equations keep U and Omega at 0 up to the integrator's
 //               error; a residue above kStickDriftFactor times the rest thresholds is projected
 //               away between steps (as at entry: its kinetic energy counts as friction work).
-//   departure   after an exit, while U and |Omega| are below kDepartureFloorFactor times the rest
-//               thresholds, the law sees the exit direction, not the residue's direction.
+//   creep       after an exit or a refused entry, while U and |Omega| are below the rest
+//               thresholds, the law sees the direction of creep (dynamics/core/limit_set.h), not
+//               the slip's own direction, whose dynamics is stiff there.
 
 #include <optional>
 
@@ -22,7 +23,6 @@ namespace frictionlab::dynamics {
 
 inline constexpr double kStickHoldPeriods = 1.0;       ///< default run.stick_hold_time / (2 pi sqrt(R/g))
 inline constexpr double kStickDriftFactor = 1e-6;      ///< projection above this fraction of the rest thresholds
-inline constexpr double kDepartureFloorFactor = 1e-6;  ///< departure floor, fraction of the rest thresholds
 
 /// run.stick_hold_time as applied: given, or the default above (not below `settle_time`, s).
 [[nodiscard]] Threshold resolve_stick_hold(const std::optional<double>& given, const BodyScales& scales,

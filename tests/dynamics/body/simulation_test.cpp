@@ -479,8 +479,7 @@ TEST(DynSimulation, ASmallTippeTopIsNotAtRestWhileItRolls) {
   RunOptions o;
   o.t_end = 20.0;
   o.output_dt = 0.1;
-  // The rolling rule at the crossing (without stick): with stick this top creeps at its limit set
-  // in steps of ~1e-6 s after its first stick (docs/dynamics.md §5); stick_run_test.cpp covers that.
+  // The rolling rule at the crossing (without stick); stick_run_test.cpp covers the top with stick.
   o.stick = false;
   const RunSummary s = simulate(sys, x0, o);
   // m g R with R = 0.024 m, the distance from the centre of mass to the far pole.

@@ -141,6 +141,61 @@ TEST(DynStickRun, StickIsLeftWhereTheRequiredForceFirstReachesKN) {
   }
 }
 
+// After the exit of run B above the weeble creeps at the limit (docs/dynamics.md §5 "creep"): the
+// wrench it needs is a force in the rocking plane (M = 0 by the plane's symmetry), so the direction
+// of creep is pure slip along that force, whatever the metric: the spin stays zero, the slip grows
+// exactly opposite the friction force (its power is |F| U), |F| = kN there, and the energy never
+// rises through the exits, creeps and entries.
+TEST(DynStickRun, AfterAnExitThePlanarWeebleCreepsAlongTheForceWithoutSpin) {
+  const double R = 0.05, e = 0.02, g = 9.81, lambda = 1e7;
+  BodySpec spec;
+  spec.preset = "sphere";
+  spec.radius = R;
+  spec.mass = 1.0;
+  spec.com = -e;
+  const Body body = make_body(spec);
+  for (const char* name : {"decoupled", "exact"}) {
+    const auto law = friction::make_law(name);
+    const auto run = [&](double k, Recorder* rec) {
+      const PlaneContact plane{k, lambda, g};
+      const BodyOnPlane sys(body, plane, *law);
+      StateVector x0 = make_state(Eigen::Vector3d::Zero(), {3.0, 0.0, 0.0}, Eigen::Vector3d::UnitZ(),
+                                  plane.static_height(body.mass * g));
+      const ContactState c0 = sys.contact_state(x0);
+      velocity(x0) = -angular_velocity(x0).cross(c0.point.r);
+      RunOptions o = tight(0.3, 1e-4);
+      o.settle.time = 0.0;
+      o.stop_when_rolling = false;
+      return simulate(sys, x0, o, rec);
+    };
+    // k below the largest |F|/N that rolling in stick needs (run A of the test above).
+    Recorder a;
+    run(5.0, &a);
+    double q_max = 0.0;
+    for (const Row& r : a.rows) q_max = std::max(q_max, std::hypot(r.c.friction.F1, r.c.friction.F2) / r.c.N);
+    const double k = 0.6 * q_max;
+    Recorder rec;
+    const RunSummary s = run(k, &rec);
+    ASSERT_GE(s.stick_exits, 1) << name << ": " << s.message;
+    const double mgR = body.mass * g * R;
+    int slipping = 0;
+    for (std::size_t i = 1; i < rec.rows.size(); ++i) {
+      const Row& r = rec.rows[i];
+      EXPECT_LE(r.energy, rec.rows[i - 1].energy + 1e-12 * mgR) << name << " at t = " << r.t;
+      if (r.t <= s.first_stick_exit || r.stick) continue;
+      // The search places beta = 0 to ~1e-9 rad (LimitSet::kDirectionTolerance): a spin moment of
+      // that order of kNa drives a spin ~1e-11 1/s here.
+      EXPECT_LT(std::abs(r.c.Omega), 1e-6 * s.rest.spin.value) << name << " at t = " << r.t;
+      if (!(r.c.U > 1e-6 * s.rest.slip_speed.value)) continue;
+      ++slipping;
+      const double F = std::hypot(r.c.friction.F1, r.c.friction.F2);
+      EXPECT_NEAR(F, k * r.c.N, 1e-9 * k * r.c.N) << name << " at t = " << r.t;
+      EXPECT_NEAR(r.c.slide_power, F * r.c.U, 1e-6 * F * r.c.U) << name << " at t = " << r.t;
+    }
+    EXPECT_GT(slipping, 10) << name;
+  }
+}
+
 // The shipped small tippe top: before stick its run ended "rolling" where Omega first passed below
 // run.rest_spin. Now it enters stick there, leaves it (the spin moment rolling without spin needs
 // exceeds what the patch holds) and goes on; energy never rises through entries and exits.

@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
 #include <cmath>
 
@@ -162,6 +163,48 @@ TEST(DynStick, ProjectionZeroesSlipAndSpinAndRemovesTheReportedEnergy) {
   EXPECT_LT(std::abs(w.dot(gamma)), 1e-14);
   EXPECT_GT(j.slide_loss + j.spin_loss, 0.0);
   EXPECT_NEAR(before - kinetic(v, w), j.slide_loss + j.spin_loss, 1e-15);
+}
+
+// The slip response of a homogeneous sphere (r = -R gamma, J = (2/5) m R^2): a unit resistance
+// along t1 slows the contact point by 1/m (the centre) + R^2/J (the turn), the spin by 0 and a
+// unit spin moment the spin by 1/J: G = diag(1/m + R^2/J, 1/m + R^2/J, 1/J) in any tangent basis.
+TEST(DynStick, SlipResponseOfAHomogeneousSphereIsTheClosedForm) {
+  const double m = 2.0, R = 0.1, J = 0.4 * m * R * R;
+  StickProblem p;
+  p.mass = m;
+  p.inertia = J * Eigen::Matrix3d::Identity();
+  p.gamma = Eigen::Vector3d(0.2, 0.5, -0.8).normalized();
+  p.r = -R * p.gamma;
+  const Eigen::Vector3d t1 = p.gamma.cross(Eigen::Vector3d(1.0, 2.0, 0.3)).normalized();
+  const Eigen::Matrix3d G = slip_response(p, t1);
+  const Eigen::Vector3d expected(1.0 / m + R * R / J, 1.0 / m + R * R / J, 1.0 / J);
+  EXPECT_LT((G - Eigen::Matrix3d(expected.asDiagonal())).norm(), 1e-12 * expected.norm()) << G;
+}
+
+// For a full inertia tensor and an eccentric contact point G is symmetric positive definite (it is
+// B M^-1 B^T), and it predicts the change of the slip and spin rates that a friction wrench makes
+// in the stick problem's own right-hand side (the eccentric sphere's rhs above).
+TEST(DynStick, SlipResponseIsSymmetricPositiveDefiniteAndPredictsTheRhs) {
+  const EccentricSphere b;
+  const Vec9 y = rolling_start(b);
+  const Eigen::Vector3d gamma = y.segment<3>(6).normalized();
+  StickProblem p;
+  p.mass = b.m;
+  p.inertia = b.J;
+  p.r = b.r(gamma);
+  p.gamma = gamma;
+  const Eigen::Vector3d t1 = gamma.unitOrthogonal(), t2 = gamma.cross(t1);
+  const Eigen::Matrix3d G = slip_response(p, t1);
+  EXPECT_LT((G - G.transpose()).norm(), 1e-12 * G.norm());
+  EXPECT_GT(Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(G).eigenvalues().minCoeff(), 0.0);
+  // The resistance rho = (0.3, -0.7, 0.002): force -(0.3 t1 - 0.7 t2), torque -0.002 gamma.
+  const Eigen::Vector3d rho(0.3, -0.7, 0.002);
+  const Eigen::Vector3d F = -(rho[0] * t1 + rho[1] * t2);
+  const Eigen::Vector3d dv = F / b.m;
+  const Eigen::Vector3d dw = b.J.inverse() * (p.r.cross(F) - rho[2] * gamma);
+  const Eigen::Vector3d du = dv + dw.cross(p.r);
+  const Eigen::Vector3d response(t1.dot(du), t2.dot(du), gamma.dot(dw));
+  EXPECT_LT((response + G * rho).norm(), 1e-12 * (G * rho).norm());
 }
 
 }  // namespace

@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
+#include <Eigen/LU>
 #include <boost/math/special_functions/ellint_2.hpp>
 #include <cmath>
 #include <memory>
@@ -93,6 +95,55 @@ TEST(DynLimitSet, ExactCircleBoundaryIsTheClosedFormWrenchOfEachSlipRatio) {
     EXPECT_NEAR(on.direction.beta, std::atan(1.0 / u), 1e-4) << "u = " << u;
   }
   EXPECT_FALSE(set.test({0.9 * kN, 0.0, 0.9 * 3.0 * kPi / 16.0 * kN * a}).inside());
+}
+
+// The direction of creep (the header comment): outside the decoupled law's cylinder at its rim
+// (|F| > kN and |M| > M0) the projection in the metric of G = diag(g, g, h) is the rim point
+// (kN F/|F|, M0) whatever G, and d is along G (rho* - rim) (per kN, M per kN a):
+// tan beta = h (M* - M0) / (g (|F*| - kN)), alpha along F*. Without a metric, h = g.
+TEST(DynLimitSet, TheDirectionOfCreepAtTheCylindersRimFollowsTheMetric) {
+  const auto decoupled = law("decoupled");
+  const double M0 = 3.0 * kPi / 16.0 * kN * a;
+  const LimitSet set(*decoupled, k, N, a, a);
+  const double df = 0.02, dm = 0.03, alpha = 0.8;
+  const PatchWrench rho{(1.0 + df) * kN * std::cos(alpha), (1.0 + df) * kN * std::sin(alpha), M0 + dm * kN * a};
+  for (const double h_over_g : {1.0, 4.0, 0.1}) {
+    const Eigen::Matrix3d Q = Eigen::Vector3d(1.0, 1.0, 1.0 / h_over_g).asDiagonal();  // G^-1, g = 1
+    const LimitSetTest t = set.test(rho, nullptr, Q);
+    EXPECT_FALSE(t.inside());
+    EXPECT_NEAR(t.direction.beta, std::atan2(h_over_g * dm, df), 1e-7) << "h/g = " << h_over_g;
+    EXPECT_NEAR(std::remainder(t.direction.alpha - alpha, 2.0 * kPi), 0.0, 1e-7) << "h/g = " << h_over_g;
+  }
+}
+
+// The defining property of the direction of creep for a smooth law and a full metric: the wrench
+// less the law's resistance in that direction is along Q d (rho* - rho(d) = lambda Q d, lambda > 0),
+// checked on the exact law of an elliptic patch (its boundary known only through the law).
+TEST(DynLimitSet, TheWrenchLessTheCreepResistanceIsAlongTheMetricTimesTheDirection) {
+  const auto exact = law("exact");
+  const LimitSet set(*exact, k, N, a, 0.4 * a);
+  Eigen::Matrix3d G;
+  G << 3.0, 0.4, -0.2,  //
+      0.4, 1.5, 0.3,    //
+      -0.2, 0.3, 0.2;
+  const Eigen::Matrix3d Q = G.inverse();
+  const PatchWrench rho{0.7 * kN, -0.5 * kN, 0.35 * kN * a};
+  const LimitSetTest t = set.test(rho, nullptr, Q);
+  ASSERT_FALSE(t.inside());
+  const PatchWrench r = set.resistance(t.direction);  // per kN, M per kN a
+  const Eigen::Vector3d gap(rho.Fx / kN - r.Fx, rho.Fy / kN - r.Fy, rho.M / (kN * a) - r.M);
+  const double cb = std::cos(t.direction.beta);
+  const Eigen::Vector3d d(cb * std::cos(t.direction.alpha), cb * std::sin(t.direction.alpha), std::sin(t.direction.beta));
+  const Eigen::Vector3d Qd = Q * d;
+  EXPECT_GT(gap.dot(Qd), 0.0);
+  EXPECT_LT(gap.cross(Qd).norm(), 1e-6 * gap.norm() * Qd.norm()) << gap.transpose() << " vs " << Qd.transpose();
+  // Without the metric the direction differs here (the metric is far from isotropic).
+  const LimitSetTest plain = set.test(rho);
+  EXPECT_GT(std::hypot(plain.direction.alpha - t.direction.alpha, plain.direction.beta - t.direction.beta), 1e-2);
+  // Following from a nearby direction finds the same one.
+  const LimitSetTest followed = set.follow(rho, {t.direction.alpha + 0.01, t.direction.beta - 0.01}, Q);
+  EXPECT_NEAR(followed.direction.alpha, t.direction.alpha, 1e-6);
+  EXPECT_NEAR(followed.direction.beta, t.direction.beta, 1e-6);
 }
 
 TEST(DynLimitSet, ASetWithoutInteriorIsDegenerateAndHoldsNothing) {
