@@ -80,34 +80,39 @@ TEST(DynStickRun, ARollingSphereStaysInStickWithoutFrictionWork) {
   }
 }
 
-// A weeble: a sphere whose centre of mass lies e below its centre, rocking from upright, rolls in
-// stick from t = 0 (run.settle_time = 0). The force rolling needs grows from 0 as it tilts; the
+// A weeble: a sphere (R = 5 cm, 1 kg) whose centre of mass lies 2 cm below its centre, rocking
+// from upright at 3 1/s about x while rolling (u = 0), on a plane of friction coefficient k, run
+// from t = 0 in settled contact (run.settle_time = 0) to t_end, sampled every output_dt.
+constexpr double kWeebleRadius = 0.05;  // m
+constexpr double kG = 9.81;             // m/s^2
+RunSummary weeble_run(const friction::FrictionLaw& law, double k, double t_end, double output_dt, Recorder* rec) {
+  BodySpec spec;
+  spec.preset = "sphere";
+  spec.radius = kWeebleRadius;
+  spec.mass = 1.0;
+  spec.com = -0.02;
+  const Body body = make_body(spec);
+  const PlaneContact plane{k, 1e7, kG};
+  const BodyOnPlane sys(body, plane, law);
+  StateVector x0 = make_state(Eigen::Vector3d::Zero(), {3.0, 0.0, 0.0}, Eigen::Vector3d::UnitZ(),
+                              plane.static_height(body.mass * kG));
+  const ContactState c0 = sys.contact_state(x0);
+  velocity(x0) = -angular_velocity(x0).cross(c0.point.r);  // rolling: u = 0
+  RunOptions o = tight(t_end, output_dt);
+  o.settle.time = 0.0;
+  o.stop_when_rolling = false;
+  return simulate(sys, x0, o, rec);
+}
+
+// The weeble rolls in stick from t = 0. The force rolling needs grows from 0 as it tilts; the
 // moment about the normal stays 0 (planar rocking), where the limit set's boundary is |F| = kN for
 // both laws. Run A (k large) never leaves stick; run B, with k between 0 and the largest |F|/N of
 // run A, must leave it where |F|/N of run A first reaches k: the runs share every step until then
 // (k enters stick only through the set).
 TEST(DynStickRun, StickIsLeftWhereTheRequiredForceFirstReachesKN) {
-  const double R = 0.05, e = 0.02, g = 9.81, lambda = 1e7;
-  BodySpec spec;
-  spec.preset = "sphere";
-  spec.radius = R;
-  spec.mass = 1.0;
-  spec.com = -e;
-  const Body body = make_body(spec);
   for (const char* name : {"decoupled", "exact"}) {
     const auto law = friction::make_law(name);
-    const auto run = [&](double k, Recorder* rec) {
-      const PlaneContact plane{k, lambda, g};
-      const BodyOnPlane sys(body, plane, *law);
-      StateVector x0 = make_state(Eigen::Vector3d::Zero(), {3.0, 0.0, 0.0}, Eigen::Vector3d::UnitZ(),
-                                  plane.static_height(body.mass * g));
-      const ContactState c0 = sys.contact_state(x0);
-      velocity(x0) = -angular_velocity(x0).cross(c0.point.r);  // rolling: u = 0
-      RunOptions o = tight(0.15, 1e-5);
-      o.settle.time = 0.0;
-      o.stop_when_rolling = false;
-      return simulate(sys, x0, o, rec);
-    };
+    const auto run = [&](double k, Recorder* rec) { return weeble_run(*law, k, 0.15, 1e-5, rec); };
     Recorder a;
     const RunSummary sa = run(5.0, &a);
     ASSERT_EQ(sa.stick_entries, 1) << name << ": " << sa.message;
@@ -117,7 +122,7 @@ TEST(DynStickRun, StickIsLeftWhereTheRequiredForceFirstReachesKN) {
     double q_max = 0.0;
     for (const Row& r : a.rows) {
       q_max = std::max(q_max, std::hypot(r.c.friction.F1, r.c.friction.F2) / r.c.N);
-      EXPECT_LT(std::abs(r.c.friction.M), 1e-12 * body.mass * g * R) << name;
+      EXPECT_LT(std::abs(r.c.friction.M), 1e-12 * 1.0 * kG * kWeebleRadius) << name;
     }
     const double k = 0.6 * q_max;
     double t_star = -1.0;
@@ -147,27 +152,9 @@ TEST(DynStickRun, StickIsLeftWhereTheRequiredForceFirstReachesKN) {
 // exactly opposite the friction force (its power is |F| U), |F| = kN there, and the energy never
 // rises through the exits, creeps and entries.
 TEST(DynStickRun, AfterAnExitThePlanarWeebleCreepsAlongTheForceWithoutSpin) {
-  const double R = 0.05, e = 0.02, g = 9.81, lambda = 1e7;
-  BodySpec spec;
-  spec.preset = "sphere";
-  spec.radius = R;
-  spec.mass = 1.0;
-  spec.com = -e;
-  const Body body = make_body(spec);
   for (const char* name : {"decoupled", "exact"}) {
     const auto law = friction::make_law(name);
-    const auto run = [&](double k, Recorder* rec) {
-      const PlaneContact plane{k, lambda, g};
-      const BodyOnPlane sys(body, plane, *law);
-      StateVector x0 = make_state(Eigen::Vector3d::Zero(), {3.0, 0.0, 0.0}, Eigen::Vector3d::UnitZ(),
-                                  plane.static_height(body.mass * g));
-      const ContactState c0 = sys.contact_state(x0);
-      velocity(x0) = -angular_velocity(x0).cross(c0.point.r);
-      RunOptions o = tight(0.3, 1e-4);
-      o.settle.time = 0.0;
-      o.stop_when_rolling = false;
-      return simulate(sys, x0, o, rec);
-    };
+    const auto run = [&](double k, Recorder* rec) { return weeble_run(*law, k, 0.3, 1e-4, rec); };
     // k below the largest |F|/N that rolling in stick needs (run A of the test above).
     Recorder a;
     run(5.0, &a);
@@ -177,7 +164,7 @@ TEST(DynStickRun, AfterAnExitThePlanarWeebleCreepsAlongTheForceWithoutSpin) {
     Recorder rec;
     const RunSummary s = run(k, &rec);
     ASSERT_GE(s.stick_exits, 1) << name << ": " << s.message;
-    const double mgR = body.mass * g * R;
+    const double mgR = 1.0 * kG * kWeebleRadius;  // m g R
     int slipping = 0;
     for (std::size_t i = 1; i < rec.rows.size(); ++i) {
       const Row& r = rec.rows[i];
