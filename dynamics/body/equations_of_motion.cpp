@@ -166,6 +166,19 @@ void BodyOnPlane::add_friction(ContactState& c, const Eigen::Vector3d& e1, const
   c.torque += c.point.r.cross(F) - c.friction.M * c.gamma;
 }
 
+friction::FrictionForces BodyOnPlane::law_at_slip(const ContactState& c, const Eigen::Vector3d& slip, double Omega,
+                                                  Eigen::Vector3d& e1, friction::PatchAngle& psi) const {
+  const double U = slip.norm();
+  if (U >= std::numeric_limits<double>::min()) {
+    e1 = slip / U;
+    psi = c.a == c.b ? friction::PatchAngle() : patch_direction(c.major, e1, c.gamma.cross(e1));
+    return law_.evaluate({U, Omega, c.a, c.b, psi, c.N, plane_.k});
+  }
+  e1 = c.major;
+  psi = friction::PatchAngle();
+  return law_.evaluate({0.0, Omega, c.a, c.b, psi, c.N, plane_.k});
+}
+
 void BodyOnPlane::operator()(double /*t*/, const StateVector& x, StateVector& dxdt) const {
   derivatives(x, contact_state(x), dxdt);
 }

@@ -53,6 +53,7 @@
 #include "dynamics/core/observer.h"
 #include "dynamics/core/pole_watch.h"
 #include "dynamics/body/state.h"
+#include "dynamics/body/stick.h"
 #include "friction/law.h"
 
 namespace frictionlab::dynamics {
@@ -101,6 +102,12 @@ struct BodyMode {
   double departure_beta = 0.0;   ///< elevation, tan beta = a Omega / U, rad
   double departure_slip = 0.0;   ///< m/s
   double departure_spin = 0.0;   ///< 1/s
+  /// The slip held on its slow manifold (dynamics/body/slip_hold.h): where the slip is small, the
+  /// spin is not and the slip's own dynamics is stiff, the tangential friction force is the one
+  /// that keeps the slip's rate at `slip_rate` (body frame, m/s^2, set by the monitor between
+  /// steps), the spin moment the law's at the state's slip; the spin stays free.
+  bool hold = false;
+  Eigen::Vector3d slip_rate = Eigen::Vector3d::Zero();
 };
 
 /// The right-hand side: a small const functor holding its parameters and the law chosen once.
@@ -140,6 +147,15 @@ class BodyOnPlane {
   /// The contact in stick or departing (see BodyMode): the friction is the stick wrench, or the
   /// law's in the exit direction. Throws what the law throws.
   void contact_in_mode(const StateVector& x, const BodyMode& mode, ContactState& c) const;
+  /// The law's friction at the contact c (its patch, load and frame) for the tangential slip
+  /// `slip` (m/s, in the contact plane) and the spin Omega (1/s) instead of c's own, in the slip
+  /// frame e1 (the slip's direction; c.major at zero slip) with the patch angle psi, both returned.
+  /// Throws what the law throws.
+  [[nodiscard]] friction::FrictionForces law_at_slip(const ContactState& c, const Eigen::Vector3d& slip, double Omega,
+                                                     Eigen::Vector3d& e1, friction::PatchAngle& psi) const;
+  /// What the stick and slip-hold solves need at x (dynamics/body/stick.h); `c` =
+  /// contact_state(x, c, false), the contact without friction.
+  [[nodiscard]] StickProblem stick_problem(const StateVector& x, const ContactState& c) const;
   /// Adds the friction `f` of the law, in the slip frame (e1, gamma x e1), to c's force and torque.
   static void add_friction(ContactState& c, const Eigen::Vector3d& e1, const friction::FrictionForces& f);
   /// The body's inertia tensor J about the centre of mass, kg m^2.
@@ -153,7 +169,7 @@ class BodyOnPlane {
 
   // The model interface of dynamics/core/run_loop.h (the mode changes the friction only: contact()).
   void contact(const StateVector& x, const BodyMode& mode, ContactState& c) const {
-    if (mode.stick || mode.departing) {
+    if (mode.stick || mode.departing || mode.hold) {
       contact_in_mode(x, mode, c);  // dynamics/body/stick_contact.cpp
     } else {
       contact_state(x, c);

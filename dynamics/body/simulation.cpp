@@ -7,6 +7,7 @@
 
 #include "dynamics/body/stick.h"
 #include "dynamics/body/rocking_energy.h"
+#include "dynamics/body/slip_hold.h"
 #include "dynamics/body/tolerance_scales.h"
 #include "dynamics/core/limit_set.h"
 #include "dynamics/core/run_loop.h"
@@ -98,6 +99,7 @@ class BodyOnPlane::Monitor {
       return After::stopped;
     }
     if (mode.stick) return stick_step(t, x, c, mode, stop);
+    if (mode.hold) return hold_step(t, x, c, mode, t - step.t0);
     // Creep (docs/dynamics.md §5): out of the stagnation region the slip's own direction is stiff no
     // more and the law sees it again.
     if (mode.departing && !s.rest.contact_stagnant(c.in_contact, c.U, c.Omega)) mode.departing = false;
@@ -107,8 +109,28 @@ class BodyOnPlane::Monitor {
       // limit set), the contact creeps at the limit in the direction of creep, which follows the
       // wrench from step to step (docs/dynamics.md §5).
       if (enter_stick(t, x, c, mode)) return After::jumped;
-      return creep(x, c, mode);
+      const long unresolved = s.creep_unresolved;
+      const After after = creep(x, c, mode);
+      unresolved_in_row_ = s.creep_unresolved > unresolved ? unresolved_in_row_ + 1 : 0;
+      if (s.chatter.max_steps.value > 0 && unresolved_in_row_ >= s.chatter.max_steps.value) {
+        // No direction along which the slip can grow consistently with the law (LimitSet::creep_direction):
+        // the slip's direction turns at a rate ~k g/|c| and the steps collapse, as in a chatter.
+        stop(Termination::chatter,
+             "the contact creeps at the limit of " + std::string(sys_.law().name()) + "'s set without a direction of creep: for " +
+                 std::to_string(unresolved_in_row_) +
+                 " steps in a row no slip/spin direction d had the slip's rate G (rho* - rho(d)) along d (the law's "
+                 "resistance is not the gradient of its dissipation there), so the slip's direction turns at the "
+                 "rate k g/|c| and the integrator only chatters (U = " + message_number(c.U) + " m/s, Omega = " +
+                 message_number(c.Omega) + " 1/s)");
+        s.rule = "creep at the limit (settled contact, U < run.rest_slip_speed, |Omega| < run.rest_spin, stick refused) "
+                 "without a consistent direction of creep for run.max_chatter_steps accepted steps in a row";
+        s.thresholds = {s.chatter.max_steps, s.settle.time, s.settle.normal_speed, s.rest.slip_speed, s.rest.spin};
+        return After::stopped;
+      }
+      return after;
     }
+    unresolved_in_row_ = 0;
+    if (hold_may_enter(t, x, c, mode, t - step.t0) && enter_hold(t, x, mode, t - step.t0)) return After::jumped;
     if (settled && options_.stop_when_rolling && s.rest.contact_stagnant(c.in_contact, c.U, c.Omega)) {
       stop(Termination::rolling, "the contact, settled since t = " + message_number(settling_.since()) +
                                      " s, neither slips (U = " + message_number(c.U) +
@@ -148,6 +170,7 @@ class BodyOnPlane::Monitor {
 
   void finish(const StateVector& /*x*/, const BodyMode& mode) {
     if (mode.stick) s_.stick_time += t_now_ - stick_since_;
+    if (mode.hold) s_.hold_time += t_now_ - hold_since_;
   }
 
  private:
@@ -265,7 +288,7 @@ class BodyOnPlane::Monitor {
       project(y, c);
       BodyMode held = mode;
       held.stick = true;
-      const LimitSetTest test = stick_test(y, held);
+      const LimitSetTest test = stick_test(y, held, /*quick_reject=*/false, /*follow=*/false, /*creep=*/true);
       if (test.inside()) return After::go_on;  // the quick test of the entry erred: retry next step
       x = y;
       mode.departing = true;
@@ -278,7 +301,7 @@ class BodyOnPlane::Monitor {
     BodyMode held = mode;
     held.stick = true;
     held.departing = false;
-    const LimitSetTest test = stick_test(x, held, /*quick_reject=*/false, /*follow=*/true);
+    const LimitSetTest test = stick_test(x, held, /*quick_reject=*/false, /*follow=*/true, /*creep=*/true);
     if (test.direction.alpha == mode.departure_alpha && test.direction.beta == mode.departure_beta) return After::go_on;
     set_direction(mode, test.direction);
     return After::jumped;
@@ -287,6 +310,80 @@ class BodyOnPlane::Monitor {
     mode.departure_alpha = d.alpha;
     mode.departure_beta = d.beta;
     warm_ = d;
+  }
+
+  // The slip held on its slow manifold (dynamics/body/slip_hold.h; docs/dynamics.md §5 "slip hold").
+  // The body's slow time: its pendulum time sqrt(R/g), or a turn of its rotation if faster.
+  double slow_time(const StateVector& x) const {
+    const double turn = angular_velocity(x).norm();
+    return std::min(1.0 / s_.scales.rate, turn > 0.0 ? 1.0 / turn : std::numeric_limits<double>::infinity());
+  }
+  // Cheap gates first: run.slip_hold, settled contact, spin above run.rest_spin, a slip ratio below
+  // kHoldEntryRatio; then the slip's relaxation rate lambda (the law's secant stiffness |F|/U times
+  // the slip response): stiff against the body's slow time (lambda T >= kHoldStiffness: the
+  // reduction is accurate) and against the step just taken (lambda h >= kHoldStepStiffness: the
+  // integrator's steps are held by it).
+  bool hold_may_enter(double t, const StateVector& x, const ContactState& c, const BodyMode& mode, double h) {
+    if (!options_.slip_hold || mode.departing) return false;
+    if (!c.in_contact || !(c.N > 0.0) || !(c.a > 0.0) || !(c.U > 0.0)) return false;
+    const double spin = std::abs(c.Omega);
+    if (!(spin >= s_.rest.spin.value) || !(c.U < kHoldEntryRatio * c.a * spin)) return false;
+    if (!settling_.settled(t)) return false;
+    ContactState free;
+    sys_.contact_state(x, free, false);
+    const double secant = std::hypot(c.friction.F1, c.friction.F2) / c.U;
+    const double lambda = largest_slip_response(sys_.stick_problem(x, free), free.major) * secant;
+    return lambda * slow_time(x) >= kHoldStiffness && lambda * h >= kHoldStepStiffness;
+  }
+  // Solves for the held slip w* from the state's slip; refused where there is none or where the
+  // relaxation at w* is not stiff enough.
+  bool enter_hold(double t, StateVector& x, BodyMode& mode, double h) {
+    ContactState free;
+    sys_.contact_state(x, free, false);
+    const StickProblem p = sys_.stick_problem(x, free);
+    const Eigen::Vector3d slip = free.u - free.u.dot(free.gamma) * free.gamma;
+    const HeldSlip held = held_slip(sys_, free, p, Eigen::Vector3d::Zero(), slip);
+    s_.hold_evaluations += held.evaluations;
+    if (!held.found || held.stiffness * slow_time(x) < kHoldStiffness) return false;
+    mode.hold = true;
+    drift_.setZero();
+    mode.slip_rate = (held.slip - slip) / h;  // the slip reaches w* over a step like the last
+    held_ = held.slip;
+    held_at_ = t;
+    hold_since_ = t;
+    ++s_.hold_entries;
+    if (s_.hold_entries == 1) s_.first_hold_entry = t;
+    return true;
+  }
+  // Between steps in the mode: leave it where the contact opens or unsettles, the spin falls below
+  // run.rest_spin (the stagnation region, where stick takes over), or the manifold is lost or no
+  // longer stiff; otherwise the slip's rate for the next step is the rate of w* since the last
+  // step plus the rate that closes the slip's gap to w* over a step like the last (no impulse: the
+  // holding force does that work, and it is friction's).
+  After hold_step(double t, StateVector& x, const ContactState& c, BodyMode& mode, double h) {
+    const auto leave = [&] {
+      mode.hold = false;
+      mode.slip_rate.setZero();
+      s_.hold_time += t - hold_since_;
+      ++s_.hold_exits;
+      return After::jumped;
+    };
+    if (!c.in_contact || !(c.N > 0.0) || !(c.a > 0.0) || !(std::abs(c.Omega) >= s_.rest.spin.value) ||
+        !settling_.settled(t)) {
+      return leave();
+    }
+    ContactState free;
+    sys_.contact_state(x, free, false);
+    const StickProblem p = sys_.stick_problem(x, free);
+    const Eigen::Vector3d slip = free.u - free.u.dot(free.gamma) * free.gamma;
+    const HeldSlip held = held_slip(sys_, free, p, drift_, slip);
+    s_.hold_evaluations += held.evaluations;
+    if (!held.found || held.stiffness * slow_time(x) < kHoldStayFactor * kHoldStiffness) return leave();
+    drift_ = t > held_at_ ? Eigen::Vector3d((held.slip - held_) / (t - held_at_)) : Eigen::Vector3d::Zero();
+    mode.slip_rate = drift_ + (held.slip - slip) / h;
+    held_ = held.slip;
+    held_at_ = t;
+    return After::jumped;  // the slip's rate changed: the steps start afresh
   }
 
   // The metric of the direction of creep at the contact c (dynamics/core/limit_set.h): Q = (S G S)^-1
@@ -308,7 +405,11 @@ class BodyOnPlane::Monitor {
   // answers "outside" at once: the entry attempts of a creeping contact cost that much.
   // The direction returned is the direction of creep (weighted by creep_metric); with `follow`,
   // only the local search from the latest direction runs.
-  LimitSetTest stick_test(const StateVector& x, const BodyMode& mode, bool quick_reject = false, bool follow = false) {
+  // With `creep`, a wrench outside gets the direction of creep of the slow manifold
+  // (LimitSet::creep_direction, from the search's direction): for a law of maximum dissipation the
+  // same direction, for another law its own where the search's is not consistent.
+  LimitSetTest stick_test(const StateVector& x, const BodyMode& mode, bool quick_reject = false, bool follow = false,
+                          bool creep = false) {
     ContactState c;
     sys_.contact(x, mode, c);
     LimitSetTest out;
@@ -330,6 +431,17 @@ class BodyOnPlane::Monitor {
     const Eigen::Matrix3d metric = creep_metric(c);
     out = follow ? set.follow(w, warm_, metric) : set.test(w, &warm_, metric);
     s_.limit_set_evaluations += out.evaluations;
+    if (creep && !out.inside()) {
+      bool found = false;
+      long evaluations = 0;
+      const SlipDirection d = set.creep_direction(w, out.direction, metric.inverse(), found, evaluations);
+      s_.limit_set_evaluations += evaluations;
+      if (found) {
+        out.direction = d;
+      } else {
+        ++s_.creep_unresolved;
+      }
+    }
     return out;
   }
 
@@ -359,6 +471,7 @@ class BodyOnPlane::Monitor {
   StateVector abs_scale_;
   bool in_contact_ = false;
   long stagnant_unsettled_ = 0;  // accepted steps in a row in the stagnation region, not settled
+  long unresolved_in_row_ = 0;   // accepted steps in a row of creep without a consistent direction
   // Stick.
   static constexpr double kStickEnergyDrift = 1e-3;  // of run.rest_kinetic_energy: "constant" in the hold rule
   double t_now_ = 0.0;
@@ -366,6 +479,11 @@ class BodyOnPlane::Monitor {
   double energy_at_entry_ = 0.0;  // J, at stick_since_
   SlipDirection warm_;            // the latest minimising direction: the next search starts there
   bool pending_exit_ = false;     // locate() found an exit: after_step leaves stick
+  // Slip hold.
+  double hold_since_ = 0.0;       // start of the current hold
+  Eigen::Vector3d held_ = Eigen::Vector3d::Zero();  // w* at the latest solve (body frame, m/s)
+  double held_at_ = 0.0;          // its time
+  Eigen::Vector3d drift_ = Eigen::Vector3d::Zero();  // w*'s own rate, m/s^2 (the manifold's slip rate)
   LimitSetTest exit_;
 };
 

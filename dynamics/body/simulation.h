@@ -69,12 +69,19 @@ struct RunSummary : RunSummaryOf<StateVector> {
   long stick_exits = 0;         ///< exits from stick (located: the wrench left the law's limit set)
   long stick_projections = 0;   ///< projections of the residue of slip and spin (entries, creep, drift)
   long creep_entries = 0;       ///< refused entries that started a creep at the limit
+  long creep_unresolved = 0;    ///< creep directions without a consistent slow manifold (the search's kept)
   double stick_time = 0.0;      ///< total time in stick, s
   double first_stick_entry = -1.0;  ///< s; -1: none
   double first_stick_exit = -1.0;   ///< s (located); -1: none
   double stick_projection_loss = 0.0;  ///< kinetic energy the projections removed (in W_slide + W_spin), J
   long limit_set_evaluations = 0;      ///< law evaluations spent on limit-set tests
   bool stick_degenerate = false;       ///< stick was refused: the law's limit set has no interior
+  // The slip held on its slow manifold (docs/dynamics.md §5 "slip hold").
+  long hold_entries = 0;               ///< entries into the mode
+  long hold_exits = 0;                 ///< exits from it
+  long hold_evaluations = 0;           ///< law evaluations spent on the manifold's solves
+  double hold_time = 0.0;              ///< total time in the mode, s
+  double first_hold_entry = -1.0;      ///< s; -1: none
   Threshold stick_hold;                ///< run.stick_hold_time as applied
 };
 

@@ -30,17 +30,21 @@ Delassus delassus(const StickProblem& p, const Eigen::Vector3d& t1) {
   return d;
 }
 
+// The tangential acceleration of the contact point and the spin acceleration without friction,
+// less what the constraint needs ((u.gamma) gamma' keeps the projected slip as it is as the
+// contact plane turns; slip_accel the slip's own rate), in the basis (t1, t2, gamma) of d.
+Eigen::Vector3d free_slip_rate(const StickProblem& p, const Delassus& d, const Eigen::Vector3d& slip_accel) {
+  const Eigen::Vector3d gamma_rate = p.gamma.cross(p.omega);  // eq. (4)
+  const Eigen::Vector3d du = p.accel_free + p.angular_accel_free.cross(p.r) + p.omega.cross(p.r_rate) -
+                             p.u.dot(p.gamma) * gamma_rate - slip_accel;
+  return {d.t1.dot(du), d.t2.dot(du), p.gamma.dot(p.angular_accel_free)};
+}
+
 }  // namespace
 
 StickWrench stick_wrench(const StickProblem& p) {
   const Delassus d = delassus(p, p.gamma.unitOrthogonal());
-  const Eigen::Vector3d gamma_rate = p.gamma.cross(p.omega);  // eq. (4)
-  // The tangential acceleration of the contact point and the spin acceleration without friction,
-  // less what the constraint needs ((u.gamma) gamma' keeps the projected slip at zero as the
-  // contact plane turns).
-  const Eigen::Vector3d du = p.accel_free + p.angular_accel_free.cross(p.r) + p.omega.cross(p.r_rate) -
-                             p.u.dot(p.gamma) * gamma_rate;
-  const Eigen::Vector3d c0(d.t1.dot(du), d.t2.dot(du), p.gamma.dot(p.angular_accel_free));
+  const Eigen::Vector3d c0 = free_slip_rate(p, d, Eigen::Vector3d::Zero());
   const Eigen::Vector3d x = d.W.partialPivLu().solve(-c0);
   StickWrench w;
   w.force = x[0] * d.t1 + x[1] * d.t2;
@@ -76,6 +80,19 @@ StickProjection stick_projection(const StickProblem& p) {
   out.slide_loss = -0.5 * (x[0] * c[0] + x[1] * c[1]);
   out.spin_loss = 0.5 * x[2] * c[2];
   return out;
+}
+
+SlipHoldForce slip_hold_force(const StickProblem& p, const Eigen::Vector3d& slip_accel) {
+  const Delassus d = delassus(p, p.gamma.unitOrthogonal());
+  const Eigen::Vector3d c0 = free_slip_rate(p, d, slip_accel);
+  // Rows 1-2 of W x = -c0 with x2 = M given: W_tt x_t = -c0_t - W_tM M.
+  const Eigen::PartialPivLU<Eigen::Matrix2d> lu(Eigen::Matrix2d(d.W.topLeftCorner<2, 2>()));
+  const Eigen::Vector2d x0 = lu.solve(-c0.head<2>());
+  const Eigen::Vector2d x1 = lu.solve(-d.W.topRightCorner<2, 1>());
+  SlipHoldForce f;
+  f.force0 = x0[0] * d.t1 + x0[1] * d.t2;
+  f.force_per_M = x1[0] * d.t1 + x1[1] * d.t2;
+  return f;
 }
 
 }  // namespace frictionlab::dynamics

@@ -62,6 +62,18 @@ struct StickWrench {
 /// For p.mass, p.inertia, p.r, p.gamma.
 [[nodiscard]] Eigen::Matrix3d slip_response(const StickProblem& p, const Eigen::Vector3d& t1);
 
+/// The force that holds the slip while the spin stays free (the slip held on its slow manifold,
+/// dynamics/body/slip_hold.h): the first two rows of the stick solve with the spin moment M given,
+///     P (v' + omega' x r + omega x r') = (u.gamma) gamma' + P slip_accel,
+/// which keeps the tangential slip's rate at slip_accel (m/s^2; zero: the slip is held as it is,
+/// which need not be zero). Affine in M: the force on the body is force0 + M force_per_M (N; N per
+/// N m), tangential.
+struct SlipHoldForce {
+  Eigen::Vector3d force0 = Eigen::Vector3d::Zero();
+  Eigen::Vector3d force_per_M = Eigen::Vector3d::Zero();
+};
+[[nodiscard]] SlipHoldForce slip_hold_force(const StickProblem& p, const Eigen::Vector3d& slip_accel);
+
 /// The impulse that makes the slip and the spin zero at once (velocities jump, nothing else).
 struct StickProjection {
   Eigen::Vector3d dv = Eigen::Vector3d::Zero();      ///< velocity change, m/s

@@ -1,6 +1,7 @@
-// The body's contact in its stick and departing modes (BodyMode, dynamics/body/equations_of_motion.h;
+// The body's contact in its stick, departing and slip-hold modes (BodyMode, dynamics/body/equations_of_motion.h;
 // docs/dynamics.md §5 "stick"): the free contact without the law's friction, plus the stick wrench
-// (dynamics/body/stick.h) or the law's friction in the direction of the exit.
+// (dynamics/body/stick.h), the law's friction in the direction of the exit, or the force that holds
+// the slip with the law's spin moment (dynamics/body/slip_hold.h).
 #include <algorithm>
 #include <cmath>
 
@@ -10,7 +11,7 @@
 namespace frictionlab::dynamics {
 
 void BodyOnPlane::contact_in_mode(const StateVector& x, const BodyMode& mode, ContactState& c) const {
-  if (!mode.stick) {
+  if (!mode.stick && !mode.hold) {
     contact_state(x, c);
     // Departing: the slip and the spin are still the residue of stick: the law sees the exit direction.
     if (!(c.N > 0.0) || c.U >= mode.departure_slip || std::abs(c.Omega) >= mode.departure_spin) return;
@@ -36,21 +37,28 @@ void BodyOnPlane::contact_in_mode(const StateVector& x, const BodyMode& mode, Co
     return;
   }
   contact_state(x, c, false);
-  if (!(c.N > 0.0)) return;  // out of contact nothing holds the body; the monitor leaves stick
-  StateVector free;
-  derivatives(x, c, free);
-  StickProblem p;
-  p.mass = body_.mass;
-  p.inertia = inertia_tensor();
-  p.r = c.point.r;
-  const double R_major = std::max(c.point.R_meridian, c.point.R_parallel);
-  const double R_minor = std::min(c.point.R_meridian, c.point.R_parallel);
-  p.omega = angular_velocity(x);
-  p.r_rate = contact_point_rate(c.gamma, p.omega, R_major, c.major, R_minor);
-  p.gamma = c.gamma;
-  p.u = c.u;
-  p.accel_free = velocity(free);
-  p.angular_accel_free = angular_velocity(free);
+  if (!(c.N > 0.0)) return;  // out of contact nothing holds the body; the monitor leaves stick or hold
+  const StickProblem p = stick_problem(x, c);
+  if (mode.hold) {
+    // The slip held (dynamics/body/slip_hold.h): the law's spin moment at the state's own slip, the
+    // tangential force that keeps the slip's rate at the monitor's slip_rate.
+    const Eigen::Vector3d slip = c.u - c.u.dot(c.gamma) * c.gamma;
+    Eigen::Vector3d e1;
+    friction::PatchAngle psi;
+    const double M = law_at_slip(c, slip, c.Omega, e1, psi).M;
+    const SlipHoldForce hold = slip_hold_force(p, mode.slip_rate);
+    const Eigen::Vector3d F = hold.force0 + M * hold.force_per_M;
+    c.e1 = e1;
+    c.psi = psi;
+    const Eigen::Vector3d e2 = c.gamma.cross(e1);
+    c.friction.F1 = -F.dot(e1);
+    c.friction.F2 = -F.dot(e2);
+    c.friction.M = M;
+    c.slide_power = -F.dot(slip);
+    c.force += F;
+    c.torque += c.point.r.cross(F) - M * c.gamma;
+    return;
+  }
   const StickWrench w = stick_wrench(p);
   // The wrench in the law's terms, in the frame of zero slip (e1 the major axis, psi = 0): the slip
   // in stick is the integrator's residue, whose direction is rounding noise (out of the contact
@@ -67,6 +75,24 @@ void BodyOnPlane::contact_in_mode(const StateVector& x, const BodyMode& mode, Co
   c.slide_power = -w.force.dot(c.u - c.u.dot(c.gamma) * c.gamma);
   c.force += w.force;
   c.torque += c.point.r.cross(w.force) - w.M * c.gamma;
+}
+
+StickProblem BodyOnPlane::stick_problem(const StateVector& x, const ContactState& c) const {
+  StateVector free;
+  derivatives(x, c, free);
+  StickProblem p;
+  p.mass = body_.mass;
+  p.inertia = inertia_tensor();
+  p.r = c.point.r;
+  const double R_major = std::max(c.point.R_meridian, c.point.R_parallel);
+  const double R_minor = std::min(c.point.R_meridian, c.point.R_parallel);
+  p.omega = angular_velocity(x);
+  p.r_rate = contact_point_rate(c.gamma, p.omega, R_major, c.major, R_minor);
+  p.gamma = c.gamma;
+  p.u = c.u;
+  p.accel_free = velocity(free);
+  p.angular_accel_free = angular_velocity(free);
+  return p;
 }
 
 }  // namespace frictionlab::dynamics

@@ -108,9 +108,16 @@ support::Json summary_json(const Scenario& scenario, const RunSummary& s) {
                 {"first_exit_time", s.first_stick_exit >= 0.0 ? support::Json(s.first_stick_exit) : support::Json(nullptr)},
                 {"projections", s.stick_projections},
                 {"creep_entries", s.creep_entries},
+                {"creep_unresolved", s.creep_unresolved},
                 {"projection_loss", s.stick_projection_loss},
                 {"limit_set_evaluations", s.limit_set_evaluations},
                 {"hold_time", s.stick_hold.value}};
+  j["slip_hold"] = {{"enabled", scenario.run.slip_hold},
+                    {"entries", s.hold_entries},
+                    {"exits", s.hold_exits},
+                    {"time_s", s.hold_time},
+                    {"first_entry_time", s.first_hold_entry >= 0.0 ? support::Json(s.first_hold_entry) : support::Json(nullptr)},
+                    {"law_evaluations", s.hold_evaluations}};
   return j;
 }
 

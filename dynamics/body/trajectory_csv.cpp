@@ -20,7 +20,8 @@ std::array<double, kTrajectoryColumns.size()> trajectory_row(const Sample& s) {
       c.in_contact ? 1.0 : 0.0,
       s.mode.stick ? 1.0 : 0.0,
       position(s.x)[0], position(s.x)[1],
-      q.w(), q.x(), q.y(), q.z()};
+      q.w(), q.x(), q.y(), q.z(),
+      s.mode.hold ? 1.0 : 0.0};
   for (double& x : row) x = support::without_negative_zero(x);
   return row;
 }

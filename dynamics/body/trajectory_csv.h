@@ -49,11 +49,11 @@
 
 namespace frictionlab::dynamics {
 
-inline constexpr std::array<std::string_view, 32> kTrajectoryColumns = {
+inline constexpr std::array<std::string_view, 33> kTrajectoryColumns = {
     "t",  "gamma1", "gamma2", "gamma3", "omega1", "omega2",  "omega3",  "v1",     "v2",
     "v3", "eps",    "N",      "U",      "Omega",  "F1",      "F2",      "M",      "a",
     "b",  "psi",    "energy", "kinetic", "W_slide", "W_spin", "in_contact", "stick", "x",
-    "y",  "qw",     "qx",     "qy",     "qz"};
+    "y",  "qw",     "qx",     "qy",     "qz",     "slip_held"};
 
 /// One row: the values of kTrajectoryColumns at sample `s` (in_contact as 0 or 1, the quaternion normalised), as the CSV reads
 /// back (-0.0 as +0.0). The CSV writes these numbers; other sinks (the Python module's arrays) take

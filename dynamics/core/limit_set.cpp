@@ -1,5 +1,7 @@
 #include "dynamics/core/limit_set.h"
 
+#include <Eigen/LU>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -80,6 +82,57 @@ PatchWrench LimitSet::resistance(const SlipDirection& d) const {
   // F1 e1 + F2 e2 in the patch frame: e1 = (cos alpha, sin alpha), e2 = (-sin alpha, cos alpha).
   const double ca = std::cos(d.alpha), sa = std::sin(d.alpha);
   return {(f.F1 * ca - f.F2 * sa) / kN_, (f.F1 * sa + f.F2 * ca) / kN_, f.M / (kN_ * a_)};
+}
+
+SlipDirection LimitSet::creep_direction(const PatchWrench& rho_SI, const SlipDirection& start,
+                                        const Eigen::Matrix3d& response, bool& found, long& evaluations) const {
+  found = false;
+  if (degenerate_) return start;
+  const Eigen::Vector3d target(rho_SI.Fx / kN_, rho_SI.Fy / kN_, rho_SI.M / (kN_ * a_));
+  // The slip's rate w = G (rho* - rho(d)) in the tangent frame of the sphere at d: (w.e_alpha,
+  // w.e_beta) / |w| vanishes where w is along d; lambda = w.d.
+  const auto rate = [&](const SlipDirection& d, double& lambda) -> Eigen::Vector2d {
+    const PatchWrench r = resistance(d);
+    ++evaluations;
+    const Eigen::Vector3d w = response * (target - Eigen::Vector3d(r.Fx, r.Fy, r.M));
+    const double ca = std::cos(d.alpha), sa = std::sin(d.alpha), cb = std::cos(d.beta), sb = std::sin(d.beta);
+    lambda = w.dot(Eigen::Vector3d(cb * ca, cb * sa, sb));
+    const double norm = w.norm();
+    return Eigen::Vector2d(w.dot(Eigen::Vector3d(-sa, ca, 0.0)), w.dot(Eigen::Vector3d(-sb * ca, -sb * sa, cb))) /
+           (norm > 0.0 ? norm : 1.0);
+  };
+  constexpr int kIterations = 30;
+  constexpr double kStep = 1e-7;  // rad, the finite-difference step
+  SlipDirection d = start;
+  double lambda = 0.0;
+  Eigen::Vector2d r = rate(d, lambda);
+  for (int it = 0; it < kIterations && r.allFinite(); ++it) {
+    if (r.norm() <= kDirectionTolerance) {
+      found = lambda > 0.0;
+      return d;
+    }
+    Eigen::Matrix2d J;
+    double unused = 0.0;
+    J.col(0) = (rate({d.alpha + kStep, d.beta}, unused) - r) / kStep;
+    J.col(1) = (rate({d.alpha, d.beta + kStep}, unused) - r) / kStep;
+    const Eigen::Vector2d step = J.partialPivLu().solve(-r);
+    if (!step.allFinite()) break;
+    // Halve a step that does not reduce the residual.
+    double scale = 1.0;
+    SlipDirection next{d.alpha + step[0], std::clamp(d.beta + step[1], -0.5 * kPi, 0.5 * kPi)};
+    double next_lambda = 0.0;
+    Eigen::Vector2d next_r = rate(next, next_lambda);
+    for (int h = 0; h < 20 && !(next_r.norm() < r.norm()); ++h) {
+      scale *= 0.5;
+      next = {d.alpha + scale * step[0], std::clamp(d.beta + scale * step[1], -0.5 * kPi, 0.5 * kPi)};
+      next_r = rate(next, next_lambda);
+    }
+    if (!(next_r.norm() < r.norm())) break;
+    d = next;
+    r = next_r;
+    lambda = next_lambda;
+  }
+  return d;
 }
 
 double LimitSet::margin(const PatchWrench& rho, const SlipDirection& d) const {

@@ -106,6 +106,16 @@ class LimitSet {
   /// Only the local search from `warm` (~60-120 law evaluations): the minimising direction follows
   /// a wrench that moved little since the test that gave `warm`.
   [[nodiscard]] LimitSetTest follow(const PatchWrench& rho, const SlipDirection& warm, const Eigen::Matrix3d& metric) const;
+  /// The direction of creep as the slow manifold of the slip defines it, for any law: the d at
+  /// which the slip's rate G (rho* - rho(d)) is along d itself (lambda > 0), for the slip response
+  /// `response` = G (symmetric positive definite, in the coordinates (x, y, a Omega) of d: the
+  /// inverse of test()'s metric). For a law of maximum dissipation it is the direction test() and
+  /// follow() find; a law whose resistance is not the gradient of its dissipation (D not a support
+  /// function where it is evaluated) has its own. Newton's method on (alpha, beta) from `start`
+  /// with a finite-difference Jacobian, to kDirectionTolerance; `found` false where it does not
+  /// converge or lambda <= 0 there. `evaluations` counts the law evaluations.
+  [[nodiscard]] SlipDirection creep_direction(const PatchWrench& rho, const SlipDirection& start,
+                                              const Eigen::Matrix3d& response, bool& found, long& evaluations) const;
   /// The margin (D(d) - rho.d)/(kN) at one direction (one law evaluation): negative proves rho
   /// outside. -inf for a degenerate set.
   [[nodiscard]] double margin_at(const PatchWrench& rho, const SlipDirection& d) const;

@@ -37,6 +37,10 @@ struct RunOptions {
   /// stops there with reason "rolling" as before stick existed (or chatters on, with
   /// stop_when_rolling = false).
   bool stick = true;
+  /// run.slip_hold: where the contact rolls with a small slip while it spins and the slip's own
+  /// dynamics is stiff, the slip is held on its slow manifold (docs/dynamics.md §5 "slip hold",
+  /// dynamics/body/slip_hold.h); false: the integrator follows the stiff slip.
+  bool slip_hold = true;
   /// run.stick_hold_time, s, > 0: a run in stick ends "rolling" (stop_when_rolling) once stick has
   /// held that long; unset: the default of dynamics/core/stick_rule.h (scaled to the body).
   std::optional<double> stick_hold_time;

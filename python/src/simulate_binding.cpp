@@ -107,7 +107,8 @@ py::tuple run(const std::optional<std::string>& path, const std::string& text, c
   for (std::size_t i = 0; i < kColumns; ++i) {
     const py::str name(dynamics::kTrajectoryColumns[i].data(), dynamics::kTrajectoryColumns[i].size());
     py::array_t<double> column = to_array(std::move(columns[i]));
-    if (dynamics::kTrajectoryColumns[i] == "in_contact" || dynamics::kTrajectoryColumns[i] == "stick") {
+    if (dynamics::kTrajectoryColumns[i] == "in_contact" || dynamics::kTrajectoryColumns[i] == "stick" ||
+        dynamics::kTrajectoryColumns[i] == "slip_held") {
       trajectory[name] = column.attr("astype")("bool");
     } else {
       trajectory[name] = std::move(column);

@@ -24,7 +24,7 @@ def assert_same_trajectory(result, csv_columns):
     assert list(result.trajectory) == list(csv_columns)
     for name, column in csv_columns.items():
         got = result.trajectory[name]
-        if name in ("in_contact", "stick"):
+        if name in ("in_contact", "stick", "slip_held"):
             assert got.dtype == bool
             np.testing.assert_array_equal(got, column != 0)
         else:

@@ -165,7 +165,7 @@ void expect_whole_rows(const std::string& csv) {
   std::istringstream lines(csv);
   int n = 0;
   for (std::string line; std::getline(lines, line); ++n)
-    ASSERT_EQ(std::count(line.begin(), line.end(), ','), 31) << "row " << n << ": " << line;  // 32 columns
+    ASSERT_EQ(std::count(line.begin(), line.end(), ','), 32) << "row " << n << ": " << line;  // 33 columns
 }
 
 bool has_temporary_files(const std::filesystem::path& dir) {
@@ -202,12 +202,12 @@ TEST(DynSimulateCommand, AFileSizeLimitStopsTheRunWithOneErrorAndValidFiles) {
 }
 
 // run.max_output_bytes, enforced by the writer on the bytes it writes: the plan (1001 rows of at
-// least 64 bytes) fits 100 kB, the rows (~550 bytes each) do not. The run stops with reason
+// least 66 bytes) fits 100 kB, the rows (~550 bytes each) do not. The run stops with reason
 // output-limit (exit 3, one line), its file whole and within one row of the limit, never past it.
 TEST(DynSimulateCommand, AnOutputPastRunMaxOutputBytesStopsTheRunAtTheLimit) {
   const auto dir = fresh_dir("max_output_bytes");
   constexpr std::uintmax_t kLimit = 100000;
-  constexpr std::uintmax_t kLongestRow = 31 * 25;  // 31 values of at most 24 characters, and separators
+  constexpr std::uintmax_t kLongestRow = 32 * 25;  // 32 values of at most 24 characters, and separators
   const auto r = run_frictionlab("simulate " + kScenarios + "sphere-spinning.toml --set run.t_end=1 "
                                  "--set run.output_dt=1e-3 --set run.max_output_bytes=100000 --out " + dir.string());
   EXPECT_EQ(r.exit_code, 3) << r.err;

@@ -210,6 +210,25 @@ TEST(DynStickRun, TheSmallTippeTopDoesNotEndAtItsFirstZeroOfOmega) {
   EXPECT_NEAR(s.final_energy + slide_work(s.x_final) + spin_work(s.x_final), s.initial_energy, 1e-9 * mgR);
 }
 
+// pade-reconstructed on the shipped tippe top: after its spin stops (~17.1 s) the spin moment rolling
+// needs exceeds what the patch holds, and no slip/spin direction lets the slip grow along itself
+// with this law (LimitSet::creep_direction): the run stops "chatter" after run.max_chatter_steps
+// such steps instead of crawling to run.max_steps (3 million steps and 70 s of wall time before),
+// its energy balanced.
+TEST(DynStickRun, ACreepWithoutADirectionStopsAsChatter) {
+  const Scenario sc = load_scenario(std::string(FRICTIONLAB_SOURCE_DIR) + "/data/scenarios/tippe-top.toml",
+                                    {"run.max_steps=300000"});
+  const auto law = friction::make_law("pade-reconstructed");
+  const BodyOnPlane sys(sc.body, sc.contact, *law);
+  const RunSummary s = simulate(sys, initial_state(sc), sc.run);
+  ASSERT_EQ(s.reason, Termination::chatter) << s.message;
+  EXPECT_NE(s.message.find("without a direction of creep"), std::string::npos) << s.message;
+  EXPECT_GE(s.creep_unresolved, s.chatter.max_steps.value);
+  EXPECT_GE(s.stick_exits + s.creep_entries, 1);
+  const double mgR = sc.body.mass * sc.contact.g * 0.024;
+  EXPECT_NEAR(s.final_energy + slide_work(s.x_final) + spin_work(s.x_final), s.initial_energy, 1e-9 * mgR);
+}
+
 // run.stick = false keeps the rule from before stick: the run ends at the crossing.
 TEST(DynStickRun, WithoutStickTheRunEndsRollingAtTheCrossing) {
   const double R = 0.05, m = 1.0, k = 0.2, g = 9.81, v0 = 2.0;

@@ -101,6 +101,49 @@ TEST(DynStick, WrenchKeepsSlipAndSpinZeroForAFullInertiaTensor) {
   EXPECT_GT(free, 1e-4);
 }
 
+// The slip-hold force (slip_hold_force): with the spin moment M given and a slip and a spin that
+// are not zero, the tangential slip P u changes at the target rate (finite differences of the
+// state along its derivative), whatever M: the force's part in M compensates the moment's effect.
+TEST(DynStick, SlipHoldForceSetsTheSlipsRateWithTheSpinMomentGiven) {
+  const EccentricSphere b;
+  Vec9 y = rolling_start(b);
+  const Eigen::Vector3d gamma = y.segment<3>(6).normalized();
+  const Eigen::Vector3d t1 = gamma.unitOrthogonal(), t2 = gamma.cross(t1);
+  y.segment<3>(0) += 0.02 * t1 - 0.01 * t2;  // a slip of 2.2 cm/s
+  y.segment<3>(3) += 1.5 * gamma;             // and a spin of 1.5 1/s
+  const Eigen::Vector3d target = 0.3 * t1 - 0.7 * t2;  // m/s^2
+  const auto slip = [&](const Vec9& z) {
+    const Eigen::Vector3d g = z.segment<3>(6).normalized();
+    const Eigen::Vector3d u = z.segment<3>(0) + z.segment<3>(3).cross(b.r(g));
+    return Eigen::Vector3d(u - u.dot(g) * g);
+  };
+  for (const double M : {0.0, 0.013, -0.4}) {
+    const Eigen::Vector3d v = y.segment<3>(0), w = y.segment<3>(3);
+    const Eigen::Vector3d r = b.r(gamma);
+    StickProblem p;
+    p.mass = b.m;
+    p.inertia = b.J;
+    p.r = r;
+    p.r_rate = -b.R * gamma.cross(w);
+    p.gamma = gamma;
+    p.omega = w;
+    p.u = v + w.cross(r);
+    p.accel_free = -w.cross(v) - b.g * gamma + b.N / b.m * gamma;
+    p.angular_accel_free = b.J.inverse() * (r.cross(b.N * gamma) - w.cross(b.J * w));
+    const SlipHoldForce hold = slip_hold_force(p, target);
+    const Eigen::Vector3d F = hold.force0 + M * hold.force_per_M;
+    EXPECT_LT(std::abs(F.dot(gamma)), 1e-12 * F.norm());  // tangential
+    Vec9 d;
+    d.segment<3>(0) = p.accel_free + F / b.m;
+    d.segment<3>(3) = p.angular_accel_free + b.J.inverse() * (r.cross(F) - M * gamma);
+    d.segment<3>(6) = gamma.cross(w);
+    const double h = 1e-5;  // central differences: error ~h^2
+    const Eigen::Vector3d rate = (slip(y + h * d) - slip(y - h * d)) / (2.0 * h);
+    const Eigen::Vector3d tangential = rate - rate.dot(gamma) * gamma;
+    EXPECT_LT((tangential - target).norm(), 1e-7 * target.norm()) << "M = " << M << ": " << tangential.transpose();
+  }
+}
+
 TEST(DynStick, HomogeneousSphereRollingSteadilyNeedsNoWrench) {
   const double m = 2.0, R = 0.1, g = 9.81;
   StickProblem p;

@@ -146,6 +146,43 @@ TEST(DynLimitSet, TheWrenchLessTheCreepResistanceIsAlongTheMetricTimesTheDirecti
   EXPECT_NEAR(followed.direction.beta, t.direction.beta, 1e-6);
 }
 
+// The slow manifold's condition (creep_direction): the slip's rate G (rho* - rho(d)) along d with a
+// positive factor. For the exact law (maximum dissipation) the metric projection's direction that
+// test() finds satisfies it to the search's tolerance, and the solve from there refines it to
+// rounding without leaving it (the condition need not have a single root: the solve starts from the
+// search's direction).
+TEST(DynLimitSet, TheDirectionOfCreepOfTheSlowManifoldHasTheSlipsRateAlongIt) {
+  Eigen::Matrix3d G;
+  G << 3.0, 0.4, -0.2,  //
+      0.4, 1.5, 0.3,    //
+      -0.2, 0.3, 0.2;
+  const PatchWrench rho{0.7 * kN, -0.5 * kN, 0.35 * kN * a};
+  const auto rate_along = [&](const LimitSet& set, const SlipDirection& dir, double& lambda) {
+    const PatchWrench r = set.resistance(dir);
+    const Eigen::Vector3d w = G * Eigen::Vector3d(rho.Fx / kN - r.Fx, rho.Fy / kN - r.Fy, rho.M / (kN * a) - r.M);
+    const double cb = std::cos(dir.beta);
+    const Eigen::Vector3d d(cb * std::cos(dir.alpha), cb * std::sin(dir.alpha), std::sin(dir.beta));
+    lambda = w.dot(d);
+    return w.cross(d).norm() / w.norm();
+  };
+  const auto exact = law("exact");
+  const LimitSet set(*exact, k, N, a, 0.4 * a);
+  const LimitSetTest t = set.test(rho, nullptr, G.inverse());
+  ASSERT_FALSE(t.inside());
+  bool found = false;
+  long evaluations = 0;
+  const SlipDirection d = set.creep_direction(rho, t.direction, G, found, evaluations);
+  ASSERT_TRUE(found);
+  EXPECT_NEAR(d.alpha, t.direction.alpha, 1e-6);
+  EXPECT_NEAR(d.beta, t.direction.beta, 1e-6);
+  double lambda = 0.0;
+  EXPECT_LT(rate_along(set, d, lambda), 1e-10);
+  EXPECT_GT(lambda, 0.0);
+  EXPECT_GT(evaluations, 0);
+  EXPECT_LT(rate_along(set, t.direction, lambda), 1e-5);  // the search's own direction, to its tolerance
+
+}
+
 TEST(DynLimitSet, ASetWithoutInteriorIsDegenerateAndHoldsNothing) {
   const auto no_spin = law("decoupled:r_spin=0");
   const LimitSet flat(*no_spin, k, N, a, a);
