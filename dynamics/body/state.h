@@ -62,24 +62,12 @@ inline Eigen::Quaterniond orientation_quaternion(const StateVector& x) {
 
 /// The orientation whose upward vertical in the body frame is `gamma` (unit) and whose heading is
 /// `heading` (rad): the shortest turn taking gamma to the world's up e_z, then a turn by `heading`
-/// about e_z. As (w, x, y, z).
-inline Eigen::Vector4d orientation_from(const Eigen::Vector3d& gamma, double heading) {
-  if (!(gamma.allFinite() && gamma.norm() > 0.0)) return {1.0, 0.0, 0.0, 0.0};  // no vertical: no tilt
-  const Eigen::Quaterniond tilt = Eigen::Quaterniond::FromTwoVectors(gamma, Eigen::Vector3d::UnitZ());
-  const Eigen::Quaterniond q = Eigen::Quaterniond(Eigen::AngleAxisd(heading, Eigen::Vector3d::UnitZ())) * tilt;
-  return {q.w(), q.x(), q.y(), q.z()};
-}
+/// about e_z. As (w, x, y, z). (Out of line, dynamics/body/state.cpp: Eigen's FromTwoVectors
+/// brings its SVD, ~5 s of compile time in every file that would include it.)
+[[nodiscard]] Eigen::Vector4d orientation_from(const Eigen::Vector3d& gamma, double heading);
 
 /// A state with zero accumulated work, at the plane's origin with heading 0.
-inline StateVector make_state(const Eigen::Vector3d& v, const Eigen::Vector3d& omega, const Eigen::Vector3d& gamma,
-                              double eps) {
-  StateVector x = StateVector::Zero();
-  velocity(x) = v;
-  angular_velocity(x) = omega;
-  vertical(x) = gamma;
-  height(x) = eps;
-  orientation(x) = orientation_from(gamma.normalized(), 0.0);
-  return x;
-}
+[[nodiscard]] StateVector make_state(const Eigen::Vector3d& v, const Eigen::Vector3d& omega, const Eigen::Vector3d& gamma,
+                                     double eps);
 
 }  // namespace frictionlab::dynamics
