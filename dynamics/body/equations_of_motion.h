@@ -108,6 +108,21 @@ struct BodyMode {
   /// steps), the spin moment the law's at the state's slip; the spin stays free.
   bool hold = false;
   Eigen::Vector3d slip_rate = Eigen::Vector3d::Zero();
+  /// After the zero slip of a law discontinuous there was held (slip_hold.h): the law sees the slip
+  /// along `slip_exit` (body frame, unit, the direction in which it starts) with the state's own
+  /// spin, not along the residue of the hold, whose direction is rounding noise; the monitor ends
+  /// the mode between steps once the slip reaches `departure_slip` (or turns back).
+  bool slip_departing = false;
+  Eigen::Vector3d slip_exit = Eigen::Vector3d::Zero();
+  /// The spin of a law discontinuous in the spin held at zero (slip_hold.h): the spin moment is the
+  /// one that keeps the spin's rate at `spin_rate` (1/s^2, set by the monitor between steps), the
+  /// force the law's at the state's slip and zero spin; the slip stays free.
+  bool spin_hold = false;
+  double spin_rate = 0.0;
+  /// After it: the law sees the spin with the sign `spin_exit` (+1 or -1) until the monitor ends
+  /// the mode (the spin reaches `departure_spin` or turns back).
+  bool spin_departing = false;
+  double spin_exit = 0.0;
 };
 
 /// The right-hand side: a small const functor holding its parameters and the law chosen once.
@@ -169,7 +184,7 @@ class BodyOnPlane {
 
   // The model interface of dynamics/core/run_loop.h (the mode changes the friction only: contact()).
   void contact(const StateVector& x, const BodyMode& mode, ContactState& c) const {
-    if (mode.stick || mode.departing || mode.hold) {
+    if (mode.stick || mode.departing || mode.hold || mode.slip_departing || mode.spin_hold || mode.spin_departing) {
       contact_in_mode(x, mode, c);  // dynamics/body/stick_contact.cpp
     } else {
       contact_state(x, c);

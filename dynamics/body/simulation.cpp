@@ -52,6 +52,30 @@ class BodyOnPlane::Monitor {
   // (bisection on the step's samples, dynamics/core/step_sampler.h): the step ends there.
   template <class Step, class Sampler>
   bool locate(Step& step, Sampler& sampler, double& t, StateVector& x, BodyMode& mode) {
+    if (mode.spin_hold) {
+      // The spin held: the first time inside the step at which the moment that holds it leaves
+      // what the law resists at zero spin.
+      if (zero_spin_margin(x, 0.0, nullptr) >= 0.0) return false;
+      const auto at = locate_first(step, sampler, [&](const StateVector& y) { return zero_spin_margin(y, 0.0, nullptr) < 0.0; });
+      t = step.t1 = at.first;
+      x = step.x1 = at.second;
+      zero_spin_margin(x, 0.0, &spin_exit_);
+      pending_spin_exit_ = true;
+      return true;
+    }
+    if (mode.hold && hold_at_zero_) {
+      // The zero slip held: the first time inside the step at which the force that holds it leaves
+      // what the law resists at zero slip.
+      const Eigen::Vector3d none = Eigen::Vector3d::Zero();
+      if (zero_slip_margin(x, none, nullptr) >= 0.0) return false;
+      const auto at =
+          locate_first(step, sampler, [&](const StateVector& y) { return zero_slip_margin(y, none, nullptr) < 0.0; });
+      t = step.t1 = at.first;
+      x = step.x1 = at.second;
+      zero_slip_margin(x, none, &slip_exit_);
+      pending_slip_exit_ = true;
+      return true;
+    }
     if (!mode.stick) return false;
     const LimitSetTest at_end = stick_test(x, mode);
     if (at_end.inside()) {
@@ -100,9 +124,25 @@ class BodyOnPlane::Monitor {
     }
     if (mode.stick) return stick_step(t, x, c, mode, stop);
     if (mode.hold) return hold_step(t, x, c, mode, t - step.t0);
+    if (mode.spin_hold) return spin_hold_step(t, x, c, mode, t - step.t0);
+    if (mode.spin_departing) {
+      // The spin has started (or has turned back: the hold may take it again).
+      if (!c.in_contact || std::abs(c.Omega) >= mode.departure_spin || !(c.Omega * mode.spin_exit > 0.0)) {
+        mode.spin_departing = false;
+        return After::jumped;
+      }
+    }
     // Creep (docs/dynamics.md §5): out of the stagnation region the slip's own direction is stiff no
     // more and the law sees it again.
     if (mode.departing && !s.rest.contact_stagnant(c.in_contact, c.U, c.Omega)) mode.departing = false;
+    if (mode.slip_departing) {
+      // The slip has started (or has turned back: the hold may take it again).
+      const Eigen::Vector3d slip = c.u - c.u.dot(c.gamma) * c.gamma;
+      if (!c.in_contact || c.U >= mode.departure_slip || !(slip.dot(mode.slip_exit) > 0.0)) {
+        mode.slip_departing = false;
+        return After::jumped;
+      }
+    }
     if (stick_may_enter(t, x, c)) {
       // Entry is tried at every step (a refusal costs one law evaluation when the wrench is outside
       // in the direction of the latest test); refused (the wrench it needs is outside the law's
@@ -131,6 +171,7 @@ class BodyOnPlane::Monitor {
     }
     unresolved_in_row_ = 0;
     if (hold_may_enter(t, x, c, mode, t - step.t0) && enter_hold(t, x, mode, t - step.t0)) return After::jumped;
+    if (spin_hold_may_enter(x, c, mode) && enter_spin_hold(t, x, mode, t - step.t0)) return After::jumped;
     if (settled && options_.stop_when_rolling && s.rest.contact_stagnant(c.in_contact, c.U, c.Omega)) {
       stop(Termination::rolling, "the contact, settled since t = " + message_number(settling_.since()) +
                                      " s, neither slips (U = " + message_number(c.U) +
@@ -171,6 +212,7 @@ class BodyOnPlane::Monitor {
   void finish(const StateVector& /*x*/, const BodyMode& mode) {
     if (mode.stick) s_.stick_time += t_now_ - stick_since_;
     if (mode.hold) s_.hold_time += t_now_ - hold_since_;
+    if (mode.spin_hold) s_.spin_hold_time += t_now_ - spin_hold_since_;
   }
 
  private:
@@ -323,12 +365,25 @@ class BodyOnPlane::Monitor {
   // the slip response): stiff against the body's slow time (lambda T >= kHoldStiffness: the
   // reduction is accurate) and against the step just taken (lambda h >= kHoldStepStiffness: the
   // integrator's steps are held by it).
+  // A law discontinuous at zero slip (slip_hold.h) is held at zero slip instead, from where its
+  // slip has fallen below run.rest_slip_speed, settled or not (the hold is then the law's own
+  // sliding mode, not a reduction); whether the law is discontinuous is read once, at the first
+  // state that passes the cheap gates (one law evaluation).
   bool hold_may_enter(double t, const StateVector& x, const ContactState& c, const BodyMode& mode, double h) {
     if (!options_.slip_hold || mode.departing) return false;
-    if (!c.in_contact || !(c.N > 0.0) || !(c.a > 0.0) || !(c.U > 0.0)) return false;
+    if (!c.in_contact || !(c.N > 0.0) || !(c.a > 0.0)) return false;
     const double spin = std::abs(c.Omega);
-    if (!(spin >= s_.rest.spin.value) || !(c.U < kHoldEntryRatio * c.a * spin)) return false;
-    if (!settling_.settled(t)) return false;
+    const bool small_slip = c.U < s_.rest.slip_speed.value;
+    const bool on_manifold = c.U > 0.0 && c.U < kHoldEntryRatio * c.a * spin;
+    if (!(spin >= s_.rest.spin.value) || !(small_slip || on_manifold)) return false;
+    if (law_jumps_ < 0) {
+      ContactState free;
+      sys_.contact_state(x, free, false);
+      law_jumps_ = zero_slip_resistance(sys_, free, free.major) >= kDiscontinuousResistance * sys_.plane().k * free.N;
+    }
+    hold_at_zero_ = law_jumps_ == 1;
+    if (hold_at_zero_) return small_slip;  // also while the slip starts after an exit: it may stop again
+    if (!on_manifold || mode.slip_departing || !settling_.settled(t)) return false;
     ContactState free;
     sys_.contact_state(x, free, false);
     const double secant = std::hypot(c.friction.F1, c.friction.F2) / c.U;
@@ -338,6 +393,26 @@ class BodyOnPlane::Monitor {
   // Solves for the held slip w* from the state's slip; refused where there is none or where the
   // relaxation at w* is not stiff enough.
   bool enter_hold(double t, StateVector& x, BodyMode& mode, double h) {
+    if (hold_at_zero_) {
+      // The slip's residue closes over a step like the last, or kZeroClosing of the slow time if
+      // longer (the steps of a chattering slip are tiny): entered only where the force that does
+      // that is within what the law resists (else the law brings the slip closer first).
+      ContactState free;
+      sys_.contact_state(x, free, false);
+      const Eigen::Vector3d closing = -(free.u - free.u.dot(free.gamma) * free.gamma) / zero_closing_time(x, h);
+      if (!(zero_slip_margin(x, closing, nullptr) >= 0.0)) return false;
+      mode.hold = true;
+      mode.slip_departing = false;
+      drift_.setZero();
+      held_.setZero();
+      mode.slip_rate = closing;
+      held_at_ = t;
+      hold_since_ = t;
+      ++s_.hold_entries;
+      ++s_.hold_zero_entries;
+      if (s_.hold_entries == 1) s_.first_hold_entry = t;
+      return true;
+    }
     ContactState free;
     sys_.contact_state(x, free, false);
     const StickProblem p = sys_.stick_problem(x, free);
@@ -368,9 +443,26 @@ class BodyOnPlane::Monitor {
       ++s_.hold_exits;
       return After::jumped;
     };
-    if (!c.in_contact || !(c.N > 0.0) || !(c.a > 0.0) || !(std::abs(c.Omega) >= s_.rest.spin.value) ||
-        !settling_.settled(t)) {
+    if (pending_slip_exit_) {
+      // The force that holds the zero slip reached what the law resists there (located): the slip
+      // starts in the direction of that force's deficit.
+      pending_slip_exit_ = false;
+      ++s_.hold_force_exits;
+      if (s_.hold_force_exits == 1) s_.first_force_exit = t;
+      mode.slip_departing = true;
+      mode.slip_exit = slip_exit_;
+      mode.departure_slip = s_.rest.slip_speed.value;
       return leave();
+    }
+    if (!c.in_contact || !(c.N > 0.0) || !(c.a > 0.0) || !(std::abs(c.Omega) >= s_.rest.spin.value) ||
+        (!hold_at_zero_ && !settling_.settled(t))) {
+      return leave();
+    }
+    if (hold_at_zero_) {
+      ContactState free;
+      sys_.contact_state(x, free, false);
+      mode.slip_rate = -(free.u - free.u.dot(free.gamma) * free.gamma) / zero_closing_time(x, h);
+      return After::jumped;
     }
     ContactState free;
     sys_.contact_state(x, free, false);
@@ -384,6 +476,100 @@ class BodyOnPlane::Monitor {
     held_ = held.slip;
     held_at_ = t;
     return After::jumped;  // the slip's rate changed: the steps start afresh
+  }
+
+  // The time over which the zero slip's residue closes: the step just taken, or kZeroClosing of the
+  // body's slow time if longer.
+  static constexpr double kZeroClosing = 1e-3;
+  double zero_closing_time(const StateVector& x, double h) const { return std::max(h, kZeroClosing * slow_time(x)); }
+
+  // At zero slip held (a law discontinuous there): what the law resists in the direction e in which
+  // the slip would start (zero_slip_resistance) less the size of the force that sets the slip's rate
+  // to `slip_rate` with the law's spin moment (slip_hold_force; zero: the force that holds the slip
+  // at zero), N; e = -F/|F| is written to `exit` if given. Exact for a law whose resistance at zero
+  // slip is the same in every direction (the disk |F| <= kN of `decoupled`); -inf out of contact.
+  double zero_slip_margin(const StateVector& x, const Eigen::Vector3d& slip_rate, Eigen::Vector3d* exit) const {
+    ContactState free;
+    sys_.contact_state(x, free, false);
+    if (!free.in_contact || !(free.N > 0.0) || !(free.a > 0.0)) return -std::numeric_limits<double>::infinity();
+    const StickProblem p = sys_.stick_problem(x, free);
+    const Eigen::Vector3d slip = free.u - free.u.dot(free.gamma) * free.gamma;
+    Eigen::Vector3d e1;
+    friction::PatchAngle psi;
+    const double M = sys_.law_at_slip(free, slip, free.Omega, e1, psi).M;
+    const SlipHoldForce hold = slip_hold_force(p, slip_rate);
+    const Eigen::Vector3d F = hold.force0 + M * hold.force_per_M;
+    const double size = F.norm();
+    const Eigen::Vector3d e = size > 0.0 ? Eigen::Vector3d(-F / size) : free.major;
+    if (exit) *exit = e;
+    return zero_slip_resistance(sys_, free, e) - size;
+  }
+
+  // The spin of a law discontinuous in the spin held at zero (slip_hold.h), the mirror of the zero
+  // slip's hold: entered where |Omega| < run.rest_spin while the body slips (U >= run.rest_slip_speed:
+  // both small is stick's), the law discontinuous in the spin (read once) and the moment that closes
+  // the spin's residue within the closing time inside the law's limit; left where that moment
+  // reaches the limit (located), the body stops slipping, or the contact opens.
+  bool spin_hold_may_enter(const StateVector& x, const ContactState& c, const BodyMode& mode) {
+    if (!options_.slip_hold || mode.departing || mode.hold || mode.spin_hold) return false;
+    if (!c.in_contact || !(c.N > 0.0) || !(c.a > 0.0)) return false;
+    if (!(std::abs(c.Omega) < s_.rest.spin.value) || !(c.U >= s_.rest.slip_speed.value)) return false;
+    if (law_spin_jumps_ < 0) {
+      ContactState free;
+      sys_.contact_state(x, free, false);
+      law_spin_jumps_ =
+          zero_spin_resistance(sys_, free, 1.0) >= kDiscontinuousResistance * sys_.plane().k * free.N * free.a;
+    }
+    return law_spin_jumps_ == 1;
+  }
+  bool enter_spin_hold(double t, StateVector& x, BodyMode& mode, double h) {
+    ContactState free;
+    sys_.contact_state(x, free, false);
+    const double closing = -free.Omega / zero_closing_time(x, h);
+    if (!(zero_spin_margin(x, closing, nullptr) >= 0.0)) return false;
+    mode.spin_hold = true;
+    mode.spin_departing = false;
+    mode.spin_rate = closing;
+    spin_hold_since_ = t;
+    ++s_.spin_hold_entries;
+    if (s_.spin_hold_entries == 1) s_.first_spin_hold_entry = t;
+    return true;
+  }
+  After spin_hold_step(double t, StateVector& x, const ContactState& c, BodyMode& mode, double h) {
+    const auto leave = [&] {
+      mode.spin_hold = false;
+      mode.spin_rate = 0.0;
+      s_.spin_hold_time += t - spin_hold_since_;
+      ++s_.spin_hold_exits;
+      return After::jumped;
+    };
+    if (pending_spin_exit_) {
+      pending_spin_exit_ = false;
+      ++s_.spin_moment_exits;
+      mode.spin_departing = true;
+      mode.spin_exit = spin_exit_;
+      mode.departure_spin = s_.rest.spin.value;
+      return leave();
+    }
+    if (!c.in_contact || !(c.N > 0.0) || !(c.a > 0.0) || !(c.U >= s_.rest.slip_speed.value)) return leave();
+    mode.spin_rate = -c.Omega / zero_closing_time(x, h);
+    return After::jumped;
+  }
+  // What the law resists at zero spin with the sign of the spin that would start (zero_spin_resistance)
+  // less the size of the moment that sets the spin's rate to `spin_rate` with the law's force at zero
+  // spin (spin_hold_moment), N m; that sign, sign(M), is written to `exit` if given; -inf out of contact.
+  double zero_spin_margin(const StateVector& x, double spin_rate, double* exit) const {
+    ContactState free;
+    sys_.contact_state(x, free, false);
+    if (!free.in_contact || !(free.N > 0.0) || !(free.a > 0.0)) return -std::numeric_limits<double>::infinity();
+    const Eigen::Vector3d slip = free.u - free.u.dot(free.gamma) * free.gamma;
+    Eigen::Vector3d e1;
+    friction::PatchAngle psi;
+    const friction::FrictionForces f = sys_.law_at_slip(free, slip, 0.0, e1, psi);
+    const double M = spin_hold_moment(sys_.stick_problem(x, free), -f.F1 * e1 - f.F2 * free.gamma.cross(e1), spin_rate);
+    const double sign = M < 0.0 ? -1.0 : 1.0;
+    if (exit) *exit = sign;
+    return zero_spin_resistance(sys_, free, sign) - std::abs(M);
   }
 
   // The metric of the direction of creep at the contact c (dynamics/core/limit_set.h): Q = (S G S)^-1
@@ -484,6 +670,14 @@ class BodyOnPlane::Monitor {
   Eigen::Vector3d held_ = Eigen::Vector3d::Zero();  // w* at the latest solve (body frame, m/s)
   double held_at_ = 0.0;          // its time
   Eigen::Vector3d drift_ = Eigen::Vector3d::Zero();  // w*'s own rate, m/s^2 (the manifold's slip rate)
+  int law_jumps_ = -1;            // the law is discontinuous at zero slip: 1 yes, 0 no, -1 not read yet
+  int law_spin_jumps_ = -1;       // the law is discontinuous at zero spin: likewise
+  double spin_hold_since_ = 0.0;  // start of the current spin hold
+  bool pending_spin_exit_ = false;  // locate() found the spin hold's exit
+  double spin_exit_ = 0.0;        // the sign with which the spin starts there
+  bool hold_at_zero_ = false;     // the mode holds the zero slip (a law discontinuous there)
+  bool pending_slip_exit_ = false;  // locate() found the zero slip's exit: after_step leaves the hold
+  Eigen::Vector3d slip_exit_ = Eigen::Vector3d::Zero();  // the direction in which the slip starts there
   LimitSetTest exit_;
 };
 

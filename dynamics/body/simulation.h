@@ -82,6 +82,15 @@ struct RunSummary : RunSummaryOf<StateVector> {
   long hold_evaluations = 0;           ///< law evaluations spent on the manifold's solves
   double hold_time = 0.0;              ///< total time in the mode, s
   double first_hold_entry = -1.0;      ///< s; -1: none
+  long hold_zero_entries = 0;          ///< of the entries, those at zero slip (a law discontinuous there)
+  long hold_force_exits = 0;           ///< exits where the force holding the zero slip reached the law's limit
+  double first_force_exit = -1.0;      ///< s, the first of those exits; -1: none
+  // The spin of a law discontinuous in the spin held at zero (docs/dynamics.md §5 "slip hold").
+  long spin_hold_entries = 0;          ///< entries into the mode
+  long spin_hold_exits = 0;            ///< exits from it
+  long spin_moment_exits = 0;          ///< of the exits, those where the holding moment reached the law's limit
+  double spin_hold_time = 0.0;         ///< total time in the mode, s
+  double first_spin_hold_entry = -1.0; ///< s; -1: none
   Threshold stick_hold;                ///< run.stick_hold_time as applied
 };
 

@@ -1,5 +1,6 @@
 #include "dynamics/body/slip_hold.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <Eigen/LU>
@@ -13,6 +14,24 @@ double largest_slip_response(const StickProblem& p, const Eigen::Vector3d& t1) {
   const double d = 0.5 * (G(0, 0) - G(1, 1));
   const double off = 0.5 * (G(0, 1) + G(1, 0));
   return m + std::sqrt(d * d + off * off);
+}
+
+double zero_slip_resistance(const BodyOnPlane& sys, const ContactState& c, const Eigen::Vector3d& e) {
+  const double U = kZeroSlipRatio * c.a * std::max(std::abs(c.Omega), 1.0);
+  Eigen::Vector3d e1;
+  friction::PatchAngle psi;
+  const friction::FrictionForces f = sys.law_at_slip(c, U * e, c.Omega, e1, psi);
+  const Eigen::Vector3d force = -f.F1 * e1 - f.F2 * c.gamma.cross(e1);
+  return -force.dot(e);
+}
+
+double zero_spin_speed(const ContactState& c) { return kZeroSlipRatio * std::max(c.U / c.a, 1.0); }
+
+double zero_spin_resistance(const BodyOnPlane& sys, const ContactState& c, double sign) {
+  const Eigen::Vector3d slip = c.u - c.u.dot(c.gamma) * c.gamma;
+  Eigen::Vector3d e1;
+  friction::PatchAngle psi;
+  return sign * sys.law_at_slip(c, slip, sign * zero_spin_speed(c), e1, psi).M;
 }
 
 HeldSlip held_slip(const BodyOnPlane& sys, const ContactState& c, const StickProblem& p,

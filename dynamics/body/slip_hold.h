@@ -16,6 +16,16 @@
 // entered where lambda is stiff both against the body's slow time T (the reduction is accurate)
 // and against the step just taken (the integrator's steps are held by it: otherwise, e.g. where the
 // contact's normal vibration holds them, holding the slip gains nothing).
+//
+// A law whose force does not vanish with the slip (`decoupled`: kN along any slip however small)
+// has no such manifold: its slip stops in finite time and then the force jumps with the slip's sign
+// (an explicit integrator chatters). Its slow manifold is the zero slip itself (Filippov's sliding
+// mode): the same mode holds U = 0 with the same force (w* = 0, the spin free with the law's moment)
+// for as long as that force lies within what the law resists at zero slip (its force in the limit
+// U -> 0+ in the direction the slip would start), and leaves at the located time where it does not.
+// The spin likewise: a law discontinuous in the spin (`decoupled`: M0 sign(Omega)) has its spin
+// held at zero while the body slips, with the moment that keeps it there and the law's force, for
+// as long as that moment is within the law's M0.
 
 #include <Eigen/Core>
 
@@ -30,6 +40,23 @@ inline constexpr double kHoldStayFactor = 0.25;    ///< stay while lambda T >= t
 inline constexpr double kHoldEntryRatio = 0.5;     ///< enter only where s = U/(a |Omega|) < this
 inline constexpr double kHoldMaxRatio = 10.0;      ///< no manifold beyond s = this (F ~ kN: not stiff)
 inline constexpr double kHoldStepStiffness = 2.0;  ///< enter where lambda h >= this (h: the step just taken)
+
+/// A law resists a vanishing slip with at least this fraction of kN: it is discontinuous at zero slip
+/// (`decoupled`). At s = U/(a |Omega|) = kZeroSlipRatio a coupled law's force is ~kZeroSlipRatio kN.
+inline constexpr double kDiscontinuousResistance = 1e-6;
+inline constexpr double kZeroSlipRatio = 1e-12;  ///< the slip ratio at which the limit U -> 0+ is read
+
+/// The law's resistance to a slip that starts along `e` (a unit vector in the contact plane) at the
+/// contact `c` with its own spin: -F.e, N, for the slip s = kZeroSlipRatio (U = s a max(|Omega|, 1 1/s)). The force of a law continuous at zero slip vanishes there; a discontinuous
+/// law's is its limit U -> 0+ (kN for `decoupled`).
+[[nodiscard]] double zero_slip_resistance(const BodyOnPlane& sys, const ContactState& c, const Eigen::Vector3d& e);
+
+/// The law's resistance to a spin that starts with the sign `sign` (+1 or -1) at the contact `c`
+/// with its own slip: sign M, N m, for a|Omega|/U = kZeroSlipRatio (|Omega| = kZeroSlipRatio
+/// max(U/a, 1 1/s)). A coupled law's moment vanishes there; `decoupled`'s is M0.
+[[nodiscard]] double zero_spin_resistance(const BodyOnPlane& sys, const ContactState& c, double sign);
+/// The spin at which zero_spin_resistance reads the law, 1/s.
+[[nodiscard]] double zero_spin_speed(const ContactState& c);
 
 /// The slip on the slow manifold at one state.
 struct HeldSlip {

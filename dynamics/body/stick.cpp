@@ -95,4 +95,11 @@ SlipHoldForce slip_hold_force(const StickProblem& p, const Eigen::Vector3d& slip
   return f;
 }
 
+double spin_hold_moment(const StickProblem& p, const Eigen::Vector3d& force, double spin_accel) {
+  const Delassus d = delassus(p, p.gamma.unitOrthogonal());
+  // Row 3 of W x = spin_accel - c0_3 with x_t = (force.t1, force.t2) given.
+  const double c3 = p.gamma.dot(p.angular_accel_free);
+  return (spin_accel - c3 - d.W(2, 0) * force.dot(d.t1) - d.W(2, 1) * force.dot(d.t2)) / d.W(2, 2);
+}
+
 }  // namespace frictionlab::dynamics

@@ -74,6 +74,12 @@ struct SlipHoldForce {
 };
 [[nodiscard]] SlipHoldForce slip_hold_force(const StickProblem& p, const Eigen::Vector3d& slip_accel);
 
+/// The spin moment that holds the spin while the slip stays free (the spin of a law discontinuous
+/// there held at zero, dynamics/body/slip_hold.h): the third row of the stick solve with the
+/// tangential force on the body `force` (N) given, which keeps the spin's rate Omega' = gamma.omega'
+/// at spin_accel (1/s^2). N m, the law's sign: the torque on the body is -M gamma.
+[[nodiscard]] double spin_hold_moment(const StickProblem& p, const Eigen::Vector3d& force, double spin_accel);
+
 /// The impulse that makes the slip and the spin zero at once (velocities jump, nothing else).
 struct StickProjection {
   Eigen::Vector3d dv = Eigen::Vector3d::Zero();      ///< velocity change, m/s

@@ -6,11 +6,48 @@
 #include <cmath>
 
 #include "dynamics/body/equations_of_motion.h"
+#include "dynamics/body/slip_hold.h"
 #include "dynamics/body/stick.h"
 
 namespace frictionlab::dynamics {
 
 void BodyOnPlane::contact_in_mode(const StateVector& x, const BodyMode& mode, ContactState& c) const {
+  if (!mode.stick && !mode.hold && (mode.spin_hold || mode.spin_departing)) {
+    // The spin held at zero (the law's force at zero spin, the moment that keeps the spin's rate at
+    // spin_rate) or starting with the sign spin_exit; the slip is the state's.
+    contact_state(x, c, false);
+    if (!(c.N > 0.0)) return;
+    const Eigen::Vector3d slip = c.u - c.u.dot(c.gamma) * c.gamma;
+    const double Omega =
+        mode.spin_hold ? 0.0 : mode.spin_exit * std::max(std::abs(c.Omega), zero_spin_speed(c));
+    Eigen::Vector3d e1;
+    friction::PatchAngle psi;
+    friction::FrictionForces f = law_at_slip(c, slip, Omega, e1, psi);
+    if (mode.spin_hold) f.M = spin_hold_moment(stick_problem(x, c), -f.F1 * e1 - f.F2 * c.gamma.cross(e1), mode.spin_rate);
+    c.e1 = e1;
+    c.psi = psi;
+    add_friction(c, e1, f);
+    c.slide_power = c.friction.F1 * e1.dot(slip) + c.friction.F2 * c.gamma.cross(e1).dot(slip);
+    return;
+  }
+  if (!mode.stick && !mode.hold && mode.slip_departing) {
+    // The slip starts along slip_exit at the state's own speed (kZeroSlipRatio a |Omega| at least:
+    // the law's limit at zero slip, dynamics/body/slip_hold.h), the spin is the state's; the monitor
+    // ends the mode between steps (a switch on U inside the steps would be a discontinuity there).
+    contact_state(x, c, false);
+    if (!(c.N > 0.0)) return;
+    const Eigen::Vector3d slip = c.u - c.u.dot(c.gamma) * c.gamma;
+    const Eigen::Vector3d e = (mode.slip_exit - mode.slip_exit.dot(c.gamma) * c.gamma).normalized();
+    const double U = std::max(c.U, kZeroSlipRatio * c.a * std::max(std::abs(c.Omega), 1.0));
+    Eigen::Vector3d e1;
+    friction::PatchAngle psi;
+    const friction::FrictionForces f = law_at_slip(c, U * e, c.Omega, e1, psi);
+    c.e1 = e1;
+    c.psi = psi;
+    add_friction(c, e1, f);
+    c.slide_power = c.friction.F1 * e1.dot(slip) + c.friction.F2 * c.gamma.cross(e1).dot(slip);
+    return;
+  }
   if (!mode.stick && !mode.hold) {
     contact_state(x, c);
     // Departing: the slip and the spin are still the residue of stick: the law sees the exit direction.

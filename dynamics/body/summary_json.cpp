@@ -117,7 +117,18 @@ support::Json summary_json(const Scenario& scenario, const RunSummary& s) {
                     {"exits", s.hold_exits},
                     {"time_s", s.hold_time},
                     {"first_entry_time", s.first_hold_entry >= 0.0 ? support::Json(s.first_hold_entry) : support::Json(nullptr)},
-                    {"law_evaluations", s.hold_evaluations}};
+                    {"law_evaluations", s.hold_evaluations},
+                    {"zero_slip_entries", s.hold_zero_entries},
+                    {"force_limit_exits", s.hold_force_exits},
+                    {"first_force_limit_exit_time",
+                     s.first_force_exit >= 0.0 ? support::Json(s.first_force_exit) : support::Json(nullptr)}};
+  j["spin_hold"] = {{"enabled", scenario.run.slip_hold},
+                    {"entries", s.spin_hold_entries},
+                    {"exits", s.spin_hold_exits},
+                    {"moment_limit_exits", s.spin_moment_exits},
+                    {"time_s", s.spin_hold_time},
+                    {"first_entry_time",
+                     s.first_spin_hold_entry >= 0.0 ? support::Json(s.first_spin_hold_entry) : support::Json(nullptr)}};
   return j;
 }
 

@@ -112,7 +112,7 @@ std::string chatter_message(const ChatterEpisode& e, const ChatterRule& rule, st
          message_number(e.max_step) + " s (below run.chatter_step = " + message_number(rule.step.value) + " s), and " +
          what + " " + rebound + " on " + std::to_string(e.rebounds) + " of them: friction law '" +
          std::string(law) + "' is discontinuous at " + zero +
-         " and this model has no stick branch, so the integrator can only chatter there with ever smaller steps; use "
+         " and the contact is not held there, so the integrator can only chatter there with ever smaller steps; use "
          "a law continuous at " + zero + " (e.g. exact, ellipsoidal), or set run.max_chatter_steps = 0 to go on to "
          "run.max_steps";
 }

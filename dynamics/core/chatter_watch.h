@@ -5,8 +5,9 @@
 // velocity of the contact and its spin) and knows nothing of the equations.
 //
 // Why. A law whose force keeps its full size however small the slip (`decoupled`: F1 = kN along
-// the slip; its spin moment M0 sign(Omega) likewise) has no stick branch in this model: when the
-// slip reaches 0 while the spin does not (or the reverse), the force jumps whenever the slip
+// the slip; its spin moment M0 sign(Omega) likewise), when nothing holds the contact where the
+// slip reaches 0 while the spin does not (or the reverse: the body holds a stopped slip or spin
+// where the law's limit allows it, with run.slip_hold, dynamics/body/slip_hold.h), jumps whenever the slip
 // passes through 0, and an adaptive integrator follows it with steps of ~tol sqrt(R/g)/(c k) and
 // below (tol the integrator's tolerance, c ~ 1..4 from the inertia; 1e-11 to 1e-8 s in the
 // shipped runs). The stagnation event

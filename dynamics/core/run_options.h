@@ -38,8 +38,10 @@ struct RunOptions {
   /// stop_when_rolling = false).
   bool stick = true;
   /// run.slip_hold: where the contact rolls with a small slip while it spins and the slip's own
-  /// dynamics is stiff, the slip is held on its slow manifold (docs/dynamics.md §5 "slip hold",
-  /// dynamics/body/slip_hold.h); false: the integrator follows the stiff slip.
+  /// dynamics is stiff, the slip is held on its slow manifold; under a law discontinuous at zero
+  /// slip (or spin), a stopped slip (or spin) is held at zero while the law's limit allows it
+  /// (docs/dynamics.md §5 "slip hold", dynamics/body/slip_hold.h); false: the integrator follows
+  /// the stiff slip, and a discontinuous law chatters.
   bool slip_hold = true;
   /// run.stick_hold_time, s, > 0: a run in stick ends "rolling" (stop_when_rolling) once stick has
   /// held that long; unset: the default of dynamics/core/stick_rule.h (scaled to the body).

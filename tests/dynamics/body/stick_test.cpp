@@ -144,6 +144,42 @@ TEST(DynStick, SlipHoldForceSetsTheSlipsRateWithTheSpinMomentGiven) {
   }
 }
 
+// The spin-hold moment (spin_hold_moment): with the tangential force given and a slip and a spin
+// that are not zero, the spin Omega = omega.gamma changes at the target rate (finite differences
+// of the state along its derivative), whatever the force.
+TEST(DynStick, SpinHoldMomentSetsTheSpinsRateWithTheForceGiven) {
+  const EccentricSphere b;
+  Vec9 y = rolling_start(b);
+  const Eigen::Vector3d gamma = y.segment<3>(6).normalized();
+  const Eigen::Vector3d t1 = gamma.unitOrthogonal(), t2 = gamma.cross(t1);
+  y.segment<3>(0) += 0.02 * t1 - 0.01 * t2;
+  y.segment<3>(3) += 1.5 * gamma;
+  const double target = -0.9;  // 1/s^2
+  const auto spin = [](const Vec9& z) { return z.segment<3>(3).dot(z.segment<3>(6).normalized()); };
+  for (const Eigen::Vector3d& F : {Eigen::Vector3d(Eigen::Vector3d::Zero()), Eigen::Vector3d(0.4 * t1 - 1.1 * t2)}) {
+    const Eigen::Vector3d v = y.segment<3>(0), w = y.segment<3>(3);
+    const Eigen::Vector3d r = b.r(gamma);
+    StickProblem p;
+    p.mass = b.m;
+    p.inertia = b.J;
+    p.r = r;
+    p.r_rate = -b.R * gamma.cross(w);
+    p.gamma = gamma;
+    p.omega = w;
+    p.u = v + w.cross(r);
+    p.accel_free = -w.cross(v) - b.g * gamma + b.N / b.m * gamma;
+    p.angular_accel_free = b.J.inverse() * (r.cross(b.N * gamma) - w.cross(b.J * w));
+    const double M = spin_hold_moment(p, F, target);
+    Vec9 d;
+    d.segment<3>(0) = p.accel_free + F / b.m;
+    d.segment<3>(3) = p.angular_accel_free + b.J.inverse() * (r.cross(F) - M * gamma);
+    d.segment<3>(6) = gamma.cross(w);
+    const double h = 1e-5;  // central differences: error ~h^2
+    const double rate = (spin(y + h * d) - spin(y - h * d)) / (2.0 * h);
+    EXPECT_NEAR(rate, target, 1e-7 * std::abs(target)) << "F = " << F.transpose();
+  }
+}
+
 TEST(DynStick, HomogeneousSphereRollingSteadilyNeedsNoWrench) {
   const double m = 2.0, R = 0.1, g = 9.81;
   StickProblem p;
