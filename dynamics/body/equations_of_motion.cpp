@@ -202,10 +202,14 @@ void BodyOnPlane::derivatives(const StateVector& x, const ContactState& c, State
   const auto q = orientation(x);
   orientation(dxdt) << -0.5 * (q[1] * w[0] + q[2] * w[1] + q[3] * w[2]), 0.5 * (q[0] * w[0] + q[2] * w[2] - q[3] * w[1]),
       0.5 * (q[0] * w[1] + q[3] * w[0] - q[1] * w[2]), 0.5 * (q[0] * w[2] + q[1] * w[1] - q[2] * w[0]);
+  // R(q) v for the unit quaternion q/|q|: the first two rows of the rotation matrix of q, divided
+  // by |q|^2 (no square root: the rates are evaluated at every stage of every step).
   const double qn2 = q.squaredNorm();
   if (qn2 > 0.0) {
-    const Eigen::Vector3d world_v = Eigen::Quaterniond(q[0], q[1], q[2], q[3]).normalized() * v;
-    position(dxdt) << world_v.x(), world_v.y();
+    const double w0 = q[0], x = q[1], y = q[2], z = q[3];
+    const double vx = (w0 * w0 + x * x - y * y - z * z) * v[0] + 2.0 * (x * y - w0 * z) * v[1] + 2.0 * (x * z + w0 * y) * v[2];
+    const double vy = 2.0 * (x * y + w0 * z) * v[0] + (w0 * w0 - x * x + y * y - z * z) * v[1] + 2.0 * (y * z - w0 * x) * v[2];
+    position(dxdt) << vx / qn2, vy / qn2;
   } else {
     position(dxdt).setZero();
   }
