@@ -36,13 +36,13 @@ struct EccentricSphere {
   [[nodiscard]] Eigen::Vector3d r(const Eigen::Vector3d& gamma) const { return c0 - R * gamma; }
 };
 
-// State y = (v, omega, gamma); returns y' under the stick wrench (or none).
+// State y = (v, omega, gamma).
 using Vec9 = Eigen::Matrix<double, 9, 1>;
-Vec9 rhs(const EccentricSphere& b, const Vec9& y, bool with_wrench) {
+
+// The stick problem of the sphere at y, its accelerations without friction (N = b.N along gamma).
+StickProblem problem_at(const EccentricSphere& b, const Vec9& y) {
   const Eigen::Vector3d v = y.segment<3>(0), w = y.segment<3>(3), gamma = y.segment<3>(6).normalized();
   const Eigen::Vector3d r = b.r(gamma);
-  const Eigen::Vector3d a_v = -w.cross(v) - b.g * gamma + b.N / b.m * gamma;
-  const Eigen::Vector3d a_w = b.J.inverse() * (r.cross(b.N * gamma) - w.cross(b.J * w));
   StickProblem p;
   p.mass = b.m;
   p.inertia = b.J;
@@ -51,8 +51,17 @@ Vec9 rhs(const EccentricSphere& b, const Vec9& y, bool with_wrench) {
   p.gamma = gamma;
   p.omega = w;
   p.u = v + w.cross(r);
-  p.accel_free = a_v;
-  p.angular_accel_free = a_w;
+  p.accel_free = -w.cross(v) - b.g * gamma + b.N / b.m * gamma;
+  p.angular_accel_free = b.J.inverse() * (r.cross(b.N * gamma) - w.cross(b.J * w));
+  return p;
+}
+
+// y' under the stick wrench (or none).
+Vec9 rhs(const EccentricSphere& b, const Vec9& y, bool with_wrench) {
+  const Eigen::Vector3d w = y.segment<3>(3), gamma = y.segment<3>(6).normalized();
+  const Eigen::Vector3d r = b.r(gamma);
+  const StickProblem p = problem_at(b, y);
+  const Eigen::Vector3d a_v = p.accel_free, a_w = p.angular_accel_free;
   StickWrench f;
   if (with_wrench) f = stick_wrench(p);
   Vec9 d;
@@ -118,18 +127,9 @@ TEST(DynStick, SlipHoldForceSetsTheSlipsRateWithTheSpinMomentGiven) {
     return Eigen::Vector3d(u - u.dot(g) * g);
   };
   for (const double M : {0.0, 0.013, -0.4}) {
-    const Eigen::Vector3d v = y.segment<3>(0), w = y.segment<3>(3);
+    const Eigen::Vector3d w = y.segment<3>(3);
     const Eigen::Vector3d r = b.r(gamma);
-    StickProblem p;
-    p.mass = b.m;
-    p.inertia = b.J;
-    p.r = r;
-    p.r_rate = -b.R * gamma.cross(w);
-    p.gamma = gamma;
-    p.omega = w;
-    p.u = v + w.cross(r);
-    p.accel_free = -w.cross(v) - b.g * gamma + b.N / b.m * gamma;
-    p.angular_accel_free = b.J.inverse() * (r.cross(b.N * gamma) - w.cross(b.J * w));
+    const StickProblem p = problem_at(b, y);
     const SlipHoldForce hold = slip_hold_force(p, target);
     const Eigen::Vector3d F = hold.force0 + M * hold.force_per_M;
     EXPECT_LT(std::abs(F.dot(gamma)), 1e-12 * F.norm());  // tangential
@@ -157,18 +157,9 @@ TEST(DynStick, SpinHoldMomentSetsTheSpinsRateWithTheForceGiven) {
   const double target = -0.9;  // 1/s^2
   const auto spin = [](const Vec9& z) { return z.segment<3>(3).dot(z.segment<3>(6).normalized()); };
   for (const Eigen::Vector3d& F : {Eigen::Vector3d(Eigen::Vector3d::Zero()), Eigen::Vector3d(0.4 * t1 - 1.1 * t2)}) {
-    const Eigen::Vector3d v = y.segment<3>(0), w = y.segment<3>(3);
+    const Eigen::Vector3d w = y.segment<3>(3);
     const Eigen::Vector3d r = b.r(gamma);
-    StickProblem p;
-    p.mass = b.m;
-    p.inertia = b.J;
-    p.r = r;
-    p.r_rate = -b.R * gamma.cross(w);
-    p.gamma = gamma;
-    p.omega = w;
-    p.u = v + w.cross(r);
-    p.accel_free = -w.cross(v) - b.g * gamma + b.N / b.m * gamma;
-    p.angular_accel_free = b.J.inverse() * (r.cross(b.N * gamma) - w.cross(b.J * w));
+    const StickProblem p = problem_at(b, y);
     const double M = spin_hold_moment(p, F, target);
     Vec9 d;
     d.segment<3>(0) = p.accel_free + F / b.m;
