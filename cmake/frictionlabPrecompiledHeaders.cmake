@@ -74,6 +74,8 @@ function(frictionlab_use_precompiled_headers)
   if(FRICTIONLAB_TESTS)
     frictionlab_pch_host(frictionlab_pch_test EXECUTABLE ${frictionlab_pch_headers} <gtest/gtest.h>)
     target_link_libraries(frictionlab_pch_test PRIVATE GTest::gtest)
+    # The tests' files are compiled with their own options (CMakeLists.txt): so is their header.
+    target_compile_options(frictionlab_pch_test PRIVATE ${FRICTIONLAB_TEST_COMPILE_OPTIONS})
   endif()
   frictionlab_collect_targets(targets ${ARGN})
   foreach(target IN LISTS targets)
