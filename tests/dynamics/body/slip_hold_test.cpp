@@ -185,7 +185,6 @@ TEST(DynSlipHoldAtZero, ADiscontinuousLawsSlipIsHeldAtZeroFromWhereItStops) {
   const double lost = 0.5 * p.m * p.v0 * p.v0 * (1.0 - 5.0 / 7.0);
   EXPECT_NEAR(r.s.initial_energy - r.s.final_energy, lost, 1e-9 * lost);
   EXPECT_NEAR(slide_work(r.s.x_final), lost, 1e-9 * lost);
-  EXPECT_LT(r.s.steps, 2000);  // the chatter took 1000 steps of ~1e-10 s at t_s alone
 }
 
 TEST(DynSlipHoldAtZero, TheSpinIsFreeUnderTheLawsOwnMomentWhileTheSlipIsHeld) {
