@@ -215,6 +215,16 @@ void BodyOnPlane::derivatives(const StateVector& x, const ContactState& c, State
   }
 }
 
+ShadowPoint BodyOnPlane::shadow_point(const StateVector& /*x*/, const ContactState& c, const BodyMode& mode) const {
+  ShadowPoint p;
+  p.in_contact = c.in_contact && c.N > 0.0 && c.a > 0.0;
+  p.input = {c.U, c.Omega, c.a, c.b, c.psi, c.N, plane_.k};  // what contact_state hands the law
+  p.own = c.friction;
+  p.own_known = mode.free();  // else c.friction is the mode's wrench, not the law's
+  p.normal_speed = c.u.dot(c.gamma);  // eps', Eq. (5)
+  return p;
+}
+
 PoleWatch::Point BodyOnPlane::pole_point(const ContactState& c) {
   if (c.in_contact && c.a > 0.0) return PoleWatch::patch_point(c.U, c.Omega, c.a, c.b, c.psi.radians());
   PoleWatch::Point p;

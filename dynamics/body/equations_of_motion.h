@@ -52,6 +52,7 @@
 #include "dynamics/contact/hertz_patch.h"
 #include "dynamics/core/observer.h"
 #include "dynamics/core/pole_watch.h"
+#include "dynamics/core/shadow_point.h"
 #include "dynamics/body/state.h"
 #include "dynamics/body/stick.h"
 #include "friction/law.h"
@@ -123,6 +124,11 @@ struct BodyMode {
   /// the mode (the spin reaches `departure_spin` or turns back).
   bool spin_departing = false;
   double spin_exit = 0.0;
+
+  /// No mode is on: the friction is the law's at the contact's own slip and spin.
+  [[nodiscard]] bool free() const {
+    return !(stick || departing || hold || slip_departing || spin_hold || spin_departing);
+  }
 };
 
 /// The right-hand side: a small const functor holding its parameters and the law chosen once.
@@ -184,10 +190,10 @@ class BodyOnPlane {
 
   // The model interface of dynamics/core/run_loop.h (the mode changes the friction only: contact()).
   void contact(const StateVector& x, const BodyMode& mode, ContactState& c) const {
-    if (mode.stick || mode.departing || mode.hold || mode.slip_departing || mode.spin_hold || mode.spin_departing) {
-      contact_in_mode(x, mode, c);  // dynamics/body/stick_contact.cpp
-    } else {
+    if (mode.free()) {
       contact_state(x, c);
+    } else {
+      contact_in_mode(x, mode, c);  // dynamics/body/stick_contact.cpp
     }
   }
   void derivatives(const StateVector& x, const ContactState& c, const BodyMode& /*mode*/, StateVector& dxdt) const {
@@ -198,6 +204,9 @@ class BodyOnPlane {
   /// in contact from the patch; out of contact the patch has shrunk to nothing (s = inf) and b/a
   /// is its limit as the depth goes to 0, sqrt(R_min/R_max) of the principal radii.
   [[nodiscard]] static PoleWatch::Point pole_point(const ContactState& c);
+  /// The contact at x as the shadow laws see it (dynamics/core/shadow_observer.h); `c` =
+  /// contact(x, mode). Never throws.
+  [[nodiscard]] ShadowPoint shadow_point(const StateVector& x, const ContactState& c, const BodyMode& mode) const;
   /// The friction at a state, in one line (for failure messages only; never throws).
   [[nodiscard]] std::string describe_friction(const StateVector& x, const BodyMode& mode) const;
   [[nodiscard]] double friction_coefficient() const { return plane_.k; }

@@ -1,9 +1,13 @@
 #include "dynamics/body/scenario_run.h"
 
+#include <optional>
+
 #include "dynamics/body/equations_of_motion.h"
 #include "dynamics/io/run_folder.h"
 #include "dynamics/body/summary_json.h"
 #include "dynamics/body/trajectory_csv.h"
+#include "dynamics/core/shadow_observer.h"
+#include "dynamics/io/shadow_output.h"
 #include "friction/registry.h"
 
 namespace frictionlab::dynamics {
@@ -19,15 +23,23 @@ ScenarioRun run_scenario(const Scenario& scenario, const std::filesystem::path& 
   ScenarioRun run;
   run.trajectory_csv = out_dir / "trajectory.csv";
   run.summary_json = out_dir / "summary.json";
-  TrajectoryCsv csv(run.trajectory_csv, static_cast<std::uint64_t>(scenario.run.max_output_bytes));
-  TeeObserver<Observer, Sample> tee(csv, progress);
+  const auto max_bytes = static_cast<std::uint64_t>(scenario.run.max_output_bytes);
+  TrajectoryCsv csv(run.trajectory_csv, max_bytes);
+  // Shadow laws (run.shadow): evaluated along the run beside its law, never changing it.
+  ShadowOutput shadow(*law, scenario.run.shadow, motion_phase_rule(sys, scenario.run), out_dir / "shadow.csv", max_bytes);
+  std::optional<ShadowObserver<BodyOnPlane>> shadow_observer;
+  if (shadow.active()) shadow_observer.emplace(sys, shadow.laws(), shadow.csv());
+  TeeObserver<Observer, Sample> tee({&csv, shadow_observer ? &*shadow_observer : nullptr, progress});
   RunOptions options = scenario.run;
   options.cancel = cancel;
   // A failing trajectory write stops the run with reason output-error (dynamics/core/observer.h).
   run.summary = simulate(sys, x0, options, &tee);
   if (run.summary.reason == Termination::output_error) run.output_error = run.summary.message;
   close_trajectory(csv, run.output_error);
-  write_run_summary(run.summary_json, summary_json(scenario, run.summary),
+  shadow.close();
+  support::Json summary = summary_json(scenario, run.summary);
+  shadow.add_to(summary, slide_work(run.summary.x_final) + spin_work(run.summary.x_final));
+  write_run_summary(run.summary_json, std::move(summary),
                     {csv.rows(), csv.bytes(), scenario.run.max_output_bytes, run.output_error});
   return run;
 }

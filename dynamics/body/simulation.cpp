@@ -681,6 +681,16 @@ class BodyOnPlane::Monitor {
   LimitSetTest exit_;
 };
 
+MotionPhaseRule motion_phase_rule(const BodyOnPlane& sys, const RunOptions& options) {
+  const BodyScales scales = body_scales(sys.body(), sys.plane());
+  const RestRule rest = resolve_rest(options.rest, scales);
+  MotionPhaseRule rule;
+  rule.rest_slip_speed = rest.slip_speed.value;
+  rule.rest_spin = rest.spin.value;
+  rule.settle_normal_speed = resolve_settling(options.settle, scales).normal_speed.value;
+  return rule;
+}
+
 RunSummary simulate(const BodyOnPlane& sys, const StateVector& x0, const RunOptions& options, Observer* observer) {
   return run_model(sys, x0, options, observer);
 }

@@ -47,6 +47,7 @@
 #include "dynamics/core/observer.h"
 #include "dynamics/core/output_limit.h"
 #include "dynamics/core/rest_event.h"
+#include "dynamics/core/motion_phase.h"
 #include "dynamics/core/run_options.h"
 #include "dynamics/core/run_summary.h"
 #include "dynamics/core/settling.h"
@@ -93,6 +94,10 @@ struct RunSummary : RunSummaryOf<StateVector> {
   double first_spin_hold_entry = -1.0; ///< s; -1: none
   Threshold stick_hold;                ///< run.stick_hold_time as applied
 };
+
+/// The phases of the body's motion for the shadow laws (dynamics/core/motion_phase.h): the run's
+/// rest thresholds and settling speed, resolved as the run resolves them.
+[[nodiscard]] MotionPhaseRule motion_phase_rule(const BodyOnPlane& sys, const RunOptions& options);
 
 /// Integrates from x0 at t = 0. `observer` may be null. Throws std::invalid_argument for invalid
 /// options or a non-finite x0; every later failure ends the run with a reason instead.

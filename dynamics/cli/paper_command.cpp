@@ -1,5 +1,5 @@
 // `frictionlab paper --out DIR [--laws L,...] [--eggs E,...] [--cases a,b,c] [--jobs N] [--set key=value]...
-//  [--resume] [--full-trajectories] [--no-baseline] [--no-figures]`:
+//  [--resume] [--full-trajectories] [--no-baseline] [--no-shadow] [--no-figures]`:
 // the paper's experiments (section 2 of Munitsyna 2013) with every law, in parallel, with figures,
 // comparisons and a report (docs/experiments.md). Writes DIR/runs/<egg>-<case>/<law>/,
 // DIR/plots/, DIR/experiments.md and CSV tables; progress on stderr, one summary line on stdout
@@ -37,6 +37,7 @@ struct PaperCliOptions {
   long long jobs = 0;
   std::vector<std::string> set;
   bool no_baseline = false;
+  bool no_shadow = false;
   bool no_figures = false;
   bool full_trajectories = false;
   bool resume = false;
@@ -59,6 +60,7 @@ void run(const PaperCliOptions& opt) {
   if (!opt.cases.empty()) job.plan.cases = paper::split_list(opt.cases, "--cases");
   job.plan.overrides = opt.set;
   job.plan.baseline = !opt.no_baseline;
+  job.plan.shadow = !opt.no_shadow;
   if (opt.jobs < 0) throw support::invalid_value("--jobs", opt.jobs, "it must be >= 0 (0: one per core)");
   job.jobs = int_option("--jobs", opt.jobs);
   job.figures = !opt.no_figures;
@@ -113,6 +115,9 @@ void register_paper_command(CLI::App& app) {
                   "Folder of <egg>-<case>.toml (default: data/scenarios here, else the source tree's)");
   cmd->add_flag("--no-baseline", opt->no_baseline,
                 "Skip the reference law rerun with tolerances x0.1 (the chaos floor of the comparison)");
+  cmd->add_flag("--no-shadow", opt->no_shadow,
+                "Do not evaluate the compared laws along the reference run (its shadow.csv and the along-the-motion "
+                "figures and table)");
   cmd->add_flag("--no-figures", opt->no_figures, "Write the plot data and gnuplot scripts but do not run gnuplot");
   cmd->add_flag("--full-trajectories", opt->full_trajectories,
                 "Keep every sample (0.01 s) in trajectory.csv (default: every " +
@@ -129,6 +134,7 @@ void register_paper_command(CLI::App& app) {
     if (opt->jobs != 0) opt->command += " --jobs " + std::to_string(opt->jobs);
     for (const auto& s : opt->set) opt->command += " --set " + s;
     if (opt->no_baseline) opt->command += " --no-baseline";
+    if (opt->no_shadow) opt->command += " --no-shadow";
     if (opt->no_figures) opt->command += " --no-figures";
     if (opt->full_trajectories) opt->command += " --full-trajectories";
     run(*opt);

@@ -25,6 +25,7 @@
 #include "dynamics/body/scenario.h"
 #include "dynamics/body/scenario_run.h"
 #include "dynamics/io/shipped_data.h"
+#include "friction/law_spec.h"
 #include "friction/registry.h"
 #include "friction/support/checked_output.h"
 #include "friction/support/errors.h"
@@ -73,6 +74,7 @@ class ProgressBar final : public dynamics::Observer {
 struct SimulateOptions {
   std::string scenario;
   std::string law;
+  std::string shadow;
   std::vector<std::string> set;
   std::string out;
 };
@@ -138,6 +140,19 @@ void run(const SimulateOptions& opt) {
     }
     overrides.push_back("contact.law=" + opt.law);
   }
+  if (!opt.shadow.empty()) {
+    // The shadow laws go in as run.shadow, a TOML array of their specs.
+    std::string array;
+    try {
+      for (const std::string& spec : friction::split_law_list(opt.shadow)) {
+        (void)friction::make_law(spec);
+        array += (array.empty() ? "[\"" : ", \"") + spec + "\"";
+      }
+    } catch (const std::invalid_argument& e) {
+      throw std::invalid_argument("--shadow " + opt.shadow + ": " + e.what());
+    }
+    overrides.push_back("run.shadow=" + array + "]");
+  }
   const dynamics::ScenarioDocument document =
       dynamics::ScenarioDocument::read(dynamics::find_shipped_file(opt.scenario, "scenarios", "scenario"));
   if (document.model(overrides) == "puck") {
@@ -175,6 +190,9 @@ void register_simulate_command(CLI::App& app) {
                   "egg-printed-a, ...: looked up in data/scenarios here, then the installed data)")
       ->required();
   cmd->add_option("--law", opt->law, "Friction law (overrides contact.law; see `frictionlab laws`)");
+  cmd->add_option("--shadow", opt->shadow,
+                  "Friction laws evaluated along the run beside its own, without changing it (a list: "
+                  "pade-printed,moller-ellipsoidal; sets run.shadow): DIR/shadow.csv and summary.json's \"shadow\"");
   cmd->add_option("--set", opt->set, "Override a scenario key, e.g. --set run.t_end=2 (repeatable)")
       ->allow_extra_args(false);
   cmd->add_option("--out", opt->out, "Output directory (created if needed)")->required();

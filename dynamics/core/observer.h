@@ -52,6 +52,13 @@ class ObserverT {
   virtual void sample(const SampleType& s) = 0;
   /// After every accepted step (cheap; for progress display).
   virtual void step(double /*t*/) {}
+  /// The state at the end of every accepted step, with its contact and mode (its energy and
+  /// kinetic energy are not computed: NaN), for an observer that asks for it
+  /// (wants_accepted_steps()): the shadow laws (dynamics/core/shadow_observer.h) read the contact of
+  /// every step the integrator took. Must not throw; the run does not depend on it.
+  virtual void accepted(const SampleType& /*s*/) {}
+  /// Whether accepted() should be called (asked once at the start of a run).
+  [[nodiscard]] virtual bool wants_accepted_steps() const { return false; }
   /// What the observer needs of its samples, asked once at the start of a run. An observer that
   /// reads only quantities that vary slowly over a step (the orientation, for features measured
   /// against thresholds far above 1e-5) may take interpolated samples, which cost nothing.

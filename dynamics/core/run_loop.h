@@ -256,6 +256,7 @@ typename Model::Summary run_model(const Model& model, const typename Model::Stat
   step.x1 = x;
   step.f1 = derivative_at(x);
   long next_sample = 1;
+  const bool wants_steps = observer && observer->wants_accepted_steps();
 
   while (output_ok && started != After::stopped) {
     if (monitor.before_step(t, x, mode, stop)) break;
@@ -295,6 +296,10 @@ typename Model::Summary run_model(const Model& model, const typename Model::Stat
       const Contact* cached = rhs.contact_at(x);
       Contact computed;
       if (!cached) model.contact(x, mode, computed);
+      if (wants_steps) {
+        constexpr double kNotComputed = std::numeric_limits<double>::quiet_NaN();
+        observer->accepted(SampleOf<Model>{t, x, cached ? *cached : computed, kNotComputed, kNotComputed, mode});
+      }
       const After after = monitor.after_step(t, x, cached ? *cached : computed, mode, step, sampler, stop);
       if (after == After::stopped) break;
       if (after == After::jumped) {

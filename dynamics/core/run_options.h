@@ -4,7 +4,9 @@
 
 #include <atomic>
 #include <optional>
+#include <string>
 #include <string_view>
+#include <vector>
 
 #include "dynamics/core/chatter_watch.h"
 #include "dynamics/core/integrator_options.h"
@@ -55,6 +57,9 @@ struct RunOptions {
   /// run.max_chatter_steps, run.chatter_step: when the chatter of a discontinuous law stops the
   /// run (dynamics/core/chatter_watch.h).
   ChatterThresholds chatter;
+  /// run.shadow: friction-law specs evaluated along the run beside its own law, without changing it
+  /// (dynamics/core/shadow_laws.h; the scenario readers check each spec against the registry).
+  std::vector<std::string> shadow;
   const std::atomic<bool>* cancel = nullptr;  ///< checked between steps; may be null
 
   /// std::invalid_argument naming the run.* key and the rule: besides each value's own range,

@@ -3,9 +3,12 @@
 // (dynamics/body/scenario_run.h, dynamics/puck/puck_scenario_run.h): the folder with the resolved
 // scenario beside the outputs, a tee of observers, and the summary.json's output record.
 
+#include <algorithm>
 #include <cstdint>
 #include <filesystem>
+#include <initializer_list>
 #include <string>
+#include <vector>
 
 #include "dynamics/core/observer.h"
 #include "friction/support/json.h"
@@ -29,24 +32,34 @@ struct TrajectoryOutput {
 /// `summary` (error null when there is none) and writes it to `path` atomically.
 void write_run_summary(const std::filesystem::path& path, support::Json summary, const TrajectoryOutput& output);
 
-/// Sends every report of a run to two observers, the second optional (the trajectory writer and a
-/// caller's progress display); `Base` is the run's observer interface (sample, step).
+/// Sends every report of a run to several observers (null ones skipped): the trajectory writer,
+/// the shadow laws' writer and a caller's progress display; `Base` is the run's observer interface.
+/// Samples are taken as the first observer asks (its sample_accuracy()).
 template <class Base, class SampleType>
 class TeeObserver final : public Base {
  public:
-  TeeObserver(Base& a, Base* b) : a_(a), b_(b) {}
+  TeeObserver(std::initializer_list<Base*> observers) {
+    for (Base* o : observers) {
+      if (o) observers_.push_back(o);
+    }
+  }
   void sample(const SampleType& s) override {
-    a_.sample(s);
-    if (b_) b_->sample(s);
+    for (Base* o : observers_) o->sample(s);
   }
   void step(double t) override {
-    a_.step(t);
-    if (b_) b_->step(t);
+    for (Base* o : observers_) o->step(t);
+  }
+  void accepted(const SampleType& s) override {
+    for (Base* o : observers_) {
+      if (o->wants_accepted_steps()) o->accepted(s);
+    }
+  }
+  [[nodiscard]] bool wants_accepted_steps() const override {
+    return std::any_of(observers_.begin(), observers_.end(), [](const Base* o) { return o->wants_accepted_steps(); });
   }
 
  private:
-  Base& a_;
-  Base* b_;
+  std::vector<Base*> observers_;
 };
 
 /// Closes a trajectory writer after the run; a failure to close is the run's output error unless

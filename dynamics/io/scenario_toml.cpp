@@ -5,6 +5,7 @@
 
 #include "dynamics/io/toml_document.h"
 #include "dynamics/io/toml_nesting.h"
+#include "friction/law_spec.h"
 #include "friction/registry.h"
 #include "friction/support/errors.h"
 
@@ -80,6 +81,24 @@ std::vector<double> Section::numbers(const std::string& key) {
   if (!a) fail_at(path(key), path(key) + " must be an array of numbers, got " + type_name(n) + " " + shown(n));
   std::vector<double> out;
   for (std::size_t i = 0; i < a->size(); ++i) out.push_back(as_number(*a->get(i), path(key) + "[" + std::to_string(i) + "]"));
+  return out;
+}
+
+std::vector<std::string> Section::strings(const std::string& key) {
+  if (!has(key)) return {};
+  const toml::node& n = node(key);
+  if (n.is_string()) return {*n.value<std::string>()};
+  const toml::array* a = n.as_array();
+  if (!a) fail_at(path(key), path(key) + " must be an array of strings, got " + type_name(n) + " " + shown(n));
+  std::vector<std::string> out;
+  for (std::size_t i = 0; i < a->size(); ++i) {
+    const toml::node& item = *a->get(i);
+    if (!item.is_string()) {
+      fail_at(path(key), path(key) + "[" + std::to_string(i) + "] must be a string, got " + type_name(item) + " " +
+                             shown(item));
+    }
+    out.push_back(*item.value<std::string>());
+  }
   return out;
 }
 
@@ -205,9 +224,22 @@ RunOptions read_run(const toml::table& root, RunKeys keys) {
   // Unset thresholds take defaults scaled to the body (dynamics/core/rest_event.h, dynamics/core/settling.h).
   r.rest.slip_speed = run.optional_number("rest_slip_speed");
   r.rest.spin = run.optional_number("rest_spin");
+  // Shadow laws (dynamics/core/shadow_laws.h): each item a law spec or a list of them.
+  for (const std::string& item : run.strings("shadow")) {
+    std::vector<std::string> specs;
+    try {
+      specs = friction::split_law_list(item);
+    } catch (const std::invalid_argument& e) {
+      throw support::invalid_value("run.shadow", std::string_view(item), e.what());
+    }
+    for (const std::string& spec : specs) {
+      check_law_spec("run.shadow", spec);
+      r.shadow.push_back(spec);
+    }
+  }
   std::vector<std::string> known = {"t_end",        "output_dt", "max_samples",     "max_output_bytes", "integrator",
                                     "abs_tol",      "rel_tol",   "initial_step",    "max_step",         "max_steps",
-                                    "rest_slip_speed", "rest_spin"};
+                                    "rest_slip_speed", "rest_spin", "shadow"};
   if (keys == RunKeys::body) {
     r.rest.kinetic_energy = run.optional_number("rest_kinetic_energy");
     r.settle.time = run.optional_number("settle_time");

@@ -53,6 +53,8 @@ class Section {
   std::string string(const std::string& key, const std::string& fallback);
   bool boolean(const std::string& key, bool fallback);
   std::vector<double> numbers(const std::string& key);
+  /// An array of strings, or one string (a list of one); absent: empty.
+  std::vector<std::string> strings(const std::string& key);
   Eigen::Vector3d vector3(const std::string& key);
   Eigen::Vector3d vector3(const std::string& key, const Eigen::Vector3d& fallback);
   /// A vector of exactly `n` numbers.

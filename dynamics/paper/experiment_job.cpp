@@ -7,6 +7,7 @@
 #include <map>
 #include <memory>
 
+#include "dynamics/paper/along_motion.h"
 #include "dynamics/paper/experiment_report.h"
 #include "dynamics/paper/figure_scripts.h"
 #include "friction/support/folder_lock.h"
@@ -92,7 +93,9 @@ JobOutcome run_paper_job(const JobOptions& options) {
   if (options.cancel && options.cancel->load()) outcome.interrupted = true;
 
   const std::vector<FigureGroup> groups = figure_groups(outcome.results);
-  const std::vector<std::string> scripts = write_figure_scripts(plots, groups);
+  std::vector<std::string> scripts = write_figure_scripts(plots, groups);
+  const AlongMotion along = write_along_motion(plots, outcome.results);
+  scripts.insert(scripts.end(), along.scripts.begin(), along.scripts.end());
   if (options.figures) {
     outcome.figure_errors = support::run_gnuplot_scripts(plots, scripts);
   } else {
@@ -115,6 +118,7 @@ JobOutcome run_paper_job(const JobOptions& options) {
   ctx.figures = outcome.figures;
   ctx.figure_errors = outcome.figure_errors;
   ctx.interrupted = outcome.interrupted;
+  ctx.along_motion = along.report;
   write_report(out, outcome.results, comparisons, verdicts, ctx);
   return outcome;
 }

@@ -105,6 +105,9 @@ std::vector<RunSpec> plan_runs(const PlanOptions& options) {
   for (const auto& o : options.overrides)
     if (o.rfind("contact.law=", 0) == 0)
       throw std::invalid_argument("--set " + o + ": the paper job sets the law of each run; choose laws with --laws");
+    else if (o.rfind("run.shadow=", 0) == 0)
+      throw std::invalid_argument("--set " + o +
+                                  ": the paper job shadows the compared laws along the reference run (--no-shadow: none)");
   const std::vector<std::string> paper_defaults = {"run.output_dt=" + support::shortest(kPaperOutputDt)};
   // Each run's scenario: the group's document with the run's overrides and its law.
   const auto resolve = [](const ScenarioDocument& doc, const RunSpec& r) {
@@ -127,10 +130,18 @@ std::vector<RunSpec> plan_runs(const PlanOptions& options) {
       base.overrides.insert(base.overrides.end(), options.overrides.begin(), options.overrides.end());
       const std::filesystem::path group_dir = options.out_dir / "runs" / base.group();
       std::shared_ptr<const Scenario> reference;
+      // The reference run carries the compared laws as shadow laws (dynamics/core/shadow_laws.h):
+      // each law's friction along the reference's own motion.
+      std::string shadows;
+      for (const auto& law : options.laws) {
+        if (friction::canonical_law_spec(law) != kReferenceLaw) shadows += (shadows.empty() ? "[\"" : ", \"") + law + "\"";
+      }
       for (const auto& law : options.laws) {
         RunSpec r = base;
         r.law = r.label = law;  // the spec verbatim; its folder a name safe in paths and links
         r.out_dir = group_dir / friction::law_file_stem(r.label);
+        if (options.shadow && !shadows.empty() && friction::canonical_law_spec(law) == kReferenceLaw)
+          r.overrides.push_back("run.shadow=" + shadows + "]");
         r.scenario = resolve(doc, r);  // throws on a bad --set
         if (friction::canonical_law_spec(law) == kReferenceLaw) reference = r.scenario;
         runs.push_back(std::move(r));

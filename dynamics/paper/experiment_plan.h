@@ -41,6 +41,8 @@ struct PlanOptions {
   std::vector<std::string> cases = known_cases();
   std::vector<std::string> overrides;  ///< the user's --set key=value, applied after the paper's own
   bool baseline = true;                ///< also run the reference law with tightened tolerances
+  /// The reference run evaluates every other law along its motion (run.shadow, shadow.csv).
+  bool shadow = true;
 
   /// Unknown or repeated names, an empty list, an empty out_dir: std::invalid_argument.
   void validate() const;

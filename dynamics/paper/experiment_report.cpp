@@ -448,7 +448,7 @@ std::string machine_description() {
 std::string report_markdown(const std::vector<RunResult>& results, const std::vector<LawComparison>& comparisons,
                             const std::vector<NarrativeVerdicts>& verdicts, const ReportContext& context) {
   return report_header(results, context) + behaviour_section(results) + narrative_section(verdicts) +
-         trajectory_error_section(results, comparisons) + cost_section(results, context.jobs) +
+         trajectory_error_section(results, comparisons) + context.along_motion + cost_section(results, context.jobs) +
          figures_section(context);
 }
 

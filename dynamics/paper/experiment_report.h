@@ -61,6 +61,8 @@ struct ReportContext {
   /// The job was stopped (Ctrl-C, SIGTERM, SIGHUP) before it finished: the report begins with an
   /// INTERRUPTED banner saying what ran and how to finish the job (--resume).
   bool interrupted = false;
+  /// The error along the motion (dynamics/paper/along_motion.h): its section, markdown.
+  std::string along_motion;
 };
 
 /// "Linux 6.1 x86_64, AMD EPYC ... (2 logical cores)".

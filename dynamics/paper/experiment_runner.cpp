@@ -8,6 +8,7 @@
 #include <system_error>
 #include <thread>
 
+#include "dynamics/paper/along_motion.h"
 #include "dynamics/paper/feature_json.h"
 #include "dynamics/paper/figure_data.h"
 #include "dynamics/paper/run_record.h"
@@ -70,16 +71,25 @@ void run_one(RunResult& r, const RunnerOptions& options, std::atomic<double>* pr
   r.features = extract_features(s, r.thresholds);
   if (!options.plot_data_dir.empty()) r.figure_ranges = write_figure_data(options.plot_data_dir, plot_data_stem(spec), s);
   const ComparisonSeries compared =
-      thin_series(s.t, s.gamma3, moving_average(s.t, s.gamma3, r.thresholds.smoothing_window), kComparisonEvery);
+      thin_series({s.t, s.gamma3, moving_average(s.t, s.gamma3, r.thresholds.smoothing_window), s.axis_x, s.axis_y,
+                   s.axis_z},
+                  kComparisonEvery);
   write_comparison_series(spec.out_dir / "gamma3.csv", compared);
   // An incomplete trajectory (its output failed) is left as it is.
   const bool thin = options.trajectory_every > 1 && run.output_error.empty();
   const long rows = thin ? thin_csv(run.trajectory_csv, options.trajectory_every) : csv_data_rows(run.trajectory_csv);
+  // The shadow laws' figure data from every sample, then shadow.csv thinned like the trajectory.
+  const std::filesystem::path shadow_csv = spec.out_dir / "shadow.csv";
+  if (!scenario.run.shadow.empty() && std::filesystem::exists(shadow_csv)) {
+    if (!options.plot_data_dir.empty()) write_shadow_figure_data(shadow_csv, options.plot_data_dir, plot_data_stem(spec));
+    if (thin) (void)thin_csv(shadow_csv, options.trajectory_every);
+  }
   support::write_file_atomically(spec.out_dir / "features.json",
                                  support::json_text(features_record(r, options.trajectory_every, rows)));
   r.t = compared.t;
   r.gamma3 = compared.gamma3;
   r.gamma3_smooth = compared.gamma3_smooth;
+  r.axis = {compared.axis_x, compared.axis_y, compared.axis_z};
 }
 
 // scenario.toml holds `scenario` as resolved: its text after the leading comment lines.
@@ -148,9 +158,13 @@ std::string keep_finished_run(RunResult& r, const RunnerOptions& options) {
     kept.t = std::move(compared.t);
     kept.gamma3 = std::move(compared.gamma3);
     kept.gamma3_smooth = std::move(compared.gamma3_smooth);
+    kept.axis = {std::move(compared.axis_x), std::move(compared.axis_y), std::move(compared.axis_z)};
     if (!options.plot_data_dir.empty()) {
       if (!std::filesystem::exists(options.plot_data_dir / (plot_data_stem(spec) + ".end.dat")))
         return "its plot data is missing";
+      if (!spec.scenario->run.shadow.empty() &&
+          !std::filesystem::exists(options.plot_data_dir / (plot_data_stem(spec) + ".shadow.dat")))
+        return "its shadow laws' plot data is missing";
       kept.figure_ranges = read_figure_ranges(options.plot_data_dir, plot_data_stem(spec));
     }
   } catch (const std::exception& e) {

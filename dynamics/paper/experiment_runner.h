@@ -14,6 +14,7 @@
 // the same feature thresholds and thinning, a trajectory.csv of the rows that summary promises,
 // gamma3.csv and the plot data. Anything else is redone, and the progress line says why.
 
+#include <array>
 #include <atomic>
 #include <filesystem>
 #include <string>
@@ -43,6 +44,7 @@ struct RunResult {
   std::vector<double> t;              ///< s
   std::vector<double> gamma3;         ///< at t
   std::vector<double> gamma3_smooth;  ///< moving average (thresholds.smoothing_window), from every sample
+  std::array<std::vector<double>, 3> axis;  ///< the symmetry axis in world axes at t (run_series.h)
   FigureRanges figure_ranges;         ///< axis caps of its figure data
   bool resumed = false;               ///< kept from an earlier job (--resume), not rerun
 

@@ -1,6 +1,7 @@
 #include "dynamics/paper/run_record.h"
 
 #include <algorithm>
+#include <array>
 #include <charconv>
 #include <cmath>
 #include <fstream>
@@ -115,27 +116,37 @@ long csv_data_rows(const std::filesystem::path& path) {
   return lines > 0 ? lines - 1 : 0;
 }
 
-ComparisonSeries thin_series(const std::vector<double>& t, const std::vector<double>& gamma3,
-                             const std::vector<double>& gamma3_smooth, int every) {
+namespace {
+constexpr const char* kComparisonHeader = "t,gamma3,gamma3_mean_1s,axis_x,axis_y,axis_z";
+
+std::array<std::vector<double>*, 6> columns_of(ComparisonSeries& s) {
+  return {&s.t, &s.gamma3, &s.gamma3_smooth, &s.axis_x, &s.axis_y, &s.axis_z};
+}
+std::array<const std::vector<double>*, 6> columns_of(const ComparisonSeries& s) {
+  return {&s.t, &s.gamma3, &s.gamma3_smooth, &s.axis_x, &s.axis_y, &s.axis_z};
+}
+}  // namespace
+
+ComparisonSeries thin_series(const ComparisonSeries& full, int every) {
   ComparisonSeries s;
-  const std::size_t n = t.size();
+  const auto from = columns_of(full);
+  const auto to = columns_of(s);
+  const std::size_t n = full.t.size();
   for (std::size_t i = 0; i < n; ++i) {
     if (i % static_cast<std::size_t>(every) != 0 && i + 1 != n) continue;
-    s.t.push_back(t[i]);
-    s.gamma3.push_back(gamma3[i]);
-    s.gamma3_smooth.push_back(gamma3_smooth[i]);
+    for (std::size_t c = 0; c < from.size(); ++c) to[c]->push_back((*from[c])[i]);
   }
   return s;
 }
 
 void write_comparison_series(const std::filesystem::path& path, const ComparisonSeries& s) {
-  std::string out = "t,gamma3,gamma3_mean_1s\n";
+  std::string out = std::string(kComparisonHeader) + "\n";
+  const auto columns = columns_of(s);
   for (std::size_t i = 0; i < s.t.size(); ++i) {
-    support::append_shortest(out, s.t[i]);
-    out += ',';
-    support::append_shortest(out, s.gamma3[i]);
-    out += ',';
-    support::append_shortest(out, s.gamma3_smooth[i]);
+    for (std::size_t c = 0; c < columns.size(); ++c) {
+      if (c > 0) out += ',';
+      support::append_shortest(out, (*columns[c])[i]);
+    }
     out += '\n';
   }
   support::write_file_atomically(path, out);
@@ -145,17 +156,20 @@ ComparisonSeries read_comparison_series(const std::filesystem::path& path) {
   const std::string in = read_text(path);
   std::istringstream lines(in);
   std::string line;
-  if (!std::getline(lines, line) || line != "t,gamma3,gamma3_mean_1s")
-    throw std::runtime_error("'" + path.string() + "' does not begin with the header t,gamma3,gamma3_mean_1s");
+  if (!std::getline(lines, line) || line != kComparisonHeader)
+    throw std::runtime_error("'" + path.string() + "' does not begin with the header " + kComparisonHeader);
   ComparisonSeries s;
+  const auto columns = columns_of(s);
   while (std::getline(lines, line)) {
-    const std::size_t a = line.find(',');
-    const std::size_t b = a == std::string::npos ? a : line.find(',', a + 1);
-    if (b == std::string::npos) throw std::runtime_error("'" + path.string() + "': a row without three numbers");
     const std::string_view row(line);
-    s.t.push_back(parse_number(row.substr(0, a), path));
-    s.gamma3.push_back(parse_number(row.substr(a + 1, b - a - 1), path));
-    s.gamma3_smooth.push_back(parse_number(row.substr(b + 1), path));
+    std::size_t start = 0;
+    for (std::size_t c = 0; c < columns.size(); ++c) {
+      const std::size_t end = c + 1 < columns.size() ? row.find(',', start) : row.size();
+      if (end == std::string_view::npos || (c + 1 == columns.size() && row.find(',', start) != std::string_view::npos))
+        throw std::runtime_error("'" + path.string() + "': a row without " + std::to_string(columns.size()) + " numbers");
+      columns[c]->push_back(parse_number(row.substr(start, end - start), path));
+      start = end + 1;
+    }
   }
   if (s.t.empty()) throw std::runtime_error("'" + path.string() + "' has no rows");
   return s;

@@ -6,8 +6,9 @@
 //                   the last one: the rows of the full trajectory at those times, bit for bit
 //                   (rerunning scenario.toml writes every sample). The features and figures are
 //                   measured on every sample, in memory, before the file is thinned.
-//   gamma3.csv      the series the laws are compared on (dynamics/paper/trajectory_compare.h):
-//                   t, gamma3 and its 1-s moving average (computed from every sample), at every
+//   gamma3.csv      the series the laws are compared on (dynamics/paper/trajectory_compare.h,
+//                   dynamics/paper/divergence.h): t, gamma3 and its 1-s moving average (computed
+//                   from every sample), and the symmetry axis in world axes, at every
 //                   kComparisonEvery-th sample and the last, in the shortest round-trip form.
 //
 // A finished run is read back from summary.json (dynamics/body/summary_json.h), features.json
@@ -44,17 +45,18 @@ long thin_csv(const std::filesystem::path& path, int every);
 /// The data lines of a CSV file (lines after the header); -1 if it cannot be read.
 [[nodiscard]] long csv_data_rows(const std::filesystem::path& path);
 
-/// The series two runs are compared on.
+/// The series two runs are compared on (every vector as long as t).
 struct ComparisonSeries {
   std::vector<double> t;              ///< s
   std::vector<double> gamma3;
   std::vector<double> gamma3_smooth;  ///< its moving average over the features' smoothing window
+  std::vector<double> axis_x, axis_y, axis_z;  ///< the symmetry axis in world axes (run_series.h)
 };
 
 /// Every `every`-th point from the first, and the last.
-[[nodiscard]] ComparisonSeries thin_series(const std::vector<double>& t, const std::vector<double>& gamma3,
-                                           const std::vector<double>& gamma3_smooth, int every);
-/// gamma3.csv: "t,gamma3,gamma3_mean_1s", shortest round-trip numbers. support::OutputError.
+[[nodiscard]] ComparisonSeries thin_series(const ComparisonSeries& full, int every);
+/// gamma3.csv: "t,gamma3,gamma3_mean_1s,axis_x,axis_y,axis_z", shortest round-trip numbers.
+/// support::OutputError.
 void write_comparison_series(const std::filesystem::path& path, const ComparisonSeries& s);
 /// std::runtime_error if the file is missing or malformed.
 [[nodiscard]] ComparisonSeries read_comparison_series(const std::filesystem::path& path);

@@ -7,12 +7,16 @@
 namespace frictionlab::dynamics::paper {
 
 void RunSeries::reserve(std::size_t n) {
-  for (auto* v : {&t, &gamma3, &omega_sq, &force, &moment, &major, &axis_ratio, &n_over_mg, &slip, &spin, &kinetic}) v->reserve(n);
+  for (auto* v : {&t, &gamma3, &omega_sq, &force, &moment, &major, &axis_ratio, &n_over_mg, &slip, &spin, &kinetic,
+                  &axis_x, &axis_y, &axis_z})
+    v->reserve(n);
   in_contact.reserve(n);
 }
 
 void RunSeries::clear() {
-  for (auto* v : {&t, &gamma3, &omega_sq, &force, &moment, &major, &axis_ratio, &n_over_mg, &slip, &spin, &kinetic}) v->clear();
+  for (auto* v : {&t, &gamma3, &omega_sq, &force, &moment, &major, &axis_ratio, &n_over_mg, &slip, &spin, &kinetic,
+                  &axis_x, &axis_y, &axis_z})
+    v->clear();
   in_contact.clear();
 }
 
@@ -43,6 +47,10 @@ void SeriesRecorder::sample(const Sample& s) {
   const double ratio = c.in_contact && c.a > 0.0 ? c.b / c.a : std::numeric_limits<double>::quiet_NaN();
   series_.push(s.t, c.gamma[2], angular_velocity(s.x).squaredNorm(), std::hypot(c.friction.F1, c.friction.F2),
                std::abs(c.friction.M), c.a, ratio, c.N / weight_, c.U, c.Omega, s.kinetic, c.in_contact);
+  const Eigen::Vector3d axis = orientation_quaternion(s.x) * Eigen::Vector3d::UnitZ();
+  series_.axis_x.push_back(axis.x());
+  series_.axis_y.push_back(axis.y());
+  series_.axis_z.push_back(axis.z());
 }
 
 void SeriesRecorder::step(double t) {

@@ -25,6 +25,10 @@ struct RunSeries {
   std::vector<double> spin;        ///< Omega = omega.gamma, 1/s
   std::vector<double> kinetic;     ///< kinetic energy, J
   std::vector<unsigned char> in_contact;  ///< 1 when eps < 0
+  /// The body's symmetry axis (body e3) in world axes, from the pose's quaternion: where the two
+  /// runs' axes point apart is their distance (dynamics/paper/divergence.h). Filled by the recorder;
+  /// empty in series built by push().
+  std::vector<double> axis_x, axis_y, axis_z;
 
   [[nodiscard]] std::size_t size() const { return t.size(); }
   [[nodiscard]] bool empty() const { return t.empty(); }

@@ -23,6 +23,7 @@
 
 #include "dynamics/core/observer.h"
 #include "dynamics/core/pole_watch.h"
+#include "dynamics/core/shadow_point.h"
 #include "dynamics/puck/puck.h"
 #include "dynamics/puck/puck_state.h"
 #include "friction/law.h"
@@ -81,6 +82,16 @@ class PuckOnPlane {
   [[nodiscard]] double kinetic_energy(const PuckState& x) const { return energy(x); }
   [[nodiscard]] PoleWatch::Point pole_point(const PuckContact& c) const {
     return PoleWatch::patch_point(c.U, c.Omega, puck_.a, puck_.b, c.psi);
+  }
+  /// The contact as the shadow laws see it (dynamics/core/shadow_observer.h): always in contact,
+  /// its friction the law's at the contact's (held) slip and spin. Never throws.
+  [[nodiscard]] ShadowPoint shadow_point(const PuckState& /*x*/, const PuckContact& c, const Holds& /*holds*/) const {
+    ShadowPoint p;
+    p.in_contact = true;
+    p.input = {c.U, c.Omega, puck_.a, puck_.b, c.psi, c.N, k_};  // what contact() hands the law
+    p.own = c.friction;
+    p.own_known = true;
+    return p;
   }
   /// The friction at a state, in one line (for failure messages only; never throws).
   [[nodiscard]] std::string describe_friction(const PuckState& x, const Holds& holds) const;

@@ -60,6 +60,14 @@ PuckState puck_tolerance_scales(const BodyScales& s) {
   return scale;
 }
 
+MotionPhaseRule motion_phase_rule(const PuckOnPlane& sys, const RunOptions& options) {
+  const RestRule rest = resolve_rest(options.rest, puck_scales(sys.puck(), sys.g()));
+  MotionPhaseRule rule;
+  rule.rest_slip_speed = rest.slip_speed.value;
+  rule.rest_spin = rest.spin.value;
+  return rule;
+}
+
 // The puck's events: the stops of slip and spin, each located inside its step and then held; rest
 // once both are held; the ratio U/(a |Omega|) at the decades of the kinetic energy.
 class PuckOnPlane::Monitor {

@@ -34,6 +34,7 @@
 #include <vector>
 
 #include "dynamics/body/body_scales.h"
+#include "dynamics/core/motion_phase.h"
 #include "dynamics/core/observer.h"
 #include "dynamics/puck/puck_equations.h"
 #include "dynamics/core/run_options.h"
@@ -80,6 +81,10 @@ struct PuckRunSummary : RunSummaryOf<PuckState> {
 /// a ratio still far from its limit, or drifting to 0 or infinity (the Hertz disk's r ~ 1/sqrt(ln
 /// 1/v), whose q creeps towards 1), has none.
 [[nodiscard]] double aitken_limit(const std::vector<RatioAtEnergy>& ratios);
+
+/// The phases of the puck's motion for the shadow laws (dynamics/core/motion_phase.h): the run's
+/// rest thresholds as the run resolves them; a rigid plane has no bouncing.
+[[nodiscard]] MotionPhaseRule motion_phase_rule(const PuckOnPlane& sys, const RunOptions& options);
 
 /// The scales of a puck (dynamics/body/body_scales.h) with the patch's major semi-axis a as its size.
 [[nodiscard]] BodyScales puck_scales(const Puck& puck, double g);

@@ -1,6 +1,9 @@
 #include "dynamics/puck/puck_scenario_run.h"
 
+#include <optional>
 
+#include "dynamics/core/shadow_observer.h"
+#include "dynamics/io/shadow_output.h"
 #include "dynamics/puck/puck_summary_json.h"
 #include "dynamics/puck/puck_trajectory_csv.h"
 #include "dynamics/io/run_folder.h"
@@ -19,14 +22,22 @@ PuckScenarioRun run_puck_scenario(const PuckScenario& scenario, const std::files
   PuckScenarioRun run;
   run.trajectory_csv = out_dir / "trajectory.csv";
   run.summary_json = out_dir / "summary.json";
-  PuckTrajectoryCsv csv(run.trajectory_csv, scenario.puck.a, static_cast<std::uint64_t>(scenario.run.max_output_bytes));
-  TeeObserver<PuckObserver, PuckSample> tee(csv, progress);
+  const auto max_bytes = static_cast<std::uint64_t>(scenario.run.max_output_bytes);
+  PuckTrajectoryCsv csv(run.trajectory_csv, scenario.puck.a, max_bytes);
+  // Shadow laws (run.shadow): evaluated along the run beside its law, never changing it.
+  ShadowOutput shadow(*law, scenario.run.shadow, motion_phase_rule(sys, scenario.run), out_dir / "shadow.csv", max_bytes);
+  std::optional<ShadowObserver<PuckOnPlane>> shadow_observer;
+  if (shadow.active()) shadow_observer.emplace(sys, shadow.laws(), shadow.csv());
+  TeeObserver<PuckObserver, PuckSample> tee({&csv, shadow_observer ? &*shadow_observer : nullptr, progress});
   RunOptions options = scenario.run;
   options.cancel = cancel;
   run.summary = simulate_puck(sys, x0, options, &tee);
   if (run.summary.reason == Termination::output_error) run.output_error = run.summary.message;
   close_trajectory(csv, run.output_error);
-  write_run_summary(run.summary_json, puck_summary_json(scenario, *law, run.summary),
+  shadow.close();
+  support::Json summary = puck_summary_json(scenario, *law, run.summary);
+  shadow.add_to(summary, slide_work(run.summary.x_final) + spin_work(run.summary.x_final));
+  write_run_summary(run.summary_json, std::move(summary),
                     {csv.rows(), csv.bytes(), scenario.run.max_output_bytes, run.output_error});
   return run;
 }

@@ -30,15 +30,22 @@ class SimulationResult:
         x, y (m, the centre of mass on the plane, world axes), qw, qx, qy, qz (the orientation
         quaternion, body to world). One element per sample (every run.output_dt seconds, and the
         final time).
+    shadow : dict of str -> numpy.ndarray, or None
+        With shadow laws (``shadow=[...]``), shadow.csv as arrays (docs/dynamics.md §8): t (s),
+        phase (int: 0 airborne, 1 bouncing, 2 sliding, 3 rolling-spin, 4 near-rest), s, b_over_a,
+        a (m), psi (rad), N (N), and per shadow law LAW ``dF1[LAW]``, ``dF2[LAW]`` (per k N),
+        ``dM[LAW]`` (per k N a), ``dP[LAW]`` (W): the law's friction minus the run's own at each
+        sample's contact. Its statistics are ``summary["shadow"]``. None without shadow laws.
     scenario_toml : str
         The resolved scenario (scenario.toml beside the run): rerunning it reproduces the run.
     out : str or None
         The folder holding trajectory.csv, summary.json and scenario.toml, if one was asked for.
     """
 
-    def __init__(self, summary, trajectory, scenario_toml, out):
+    def __init__(self, summary, trajectory, scenario_toml, out, shadow=None):
         self.summary = summary
         self.trajectory = trajectory
+        self.shadow = shadow
         self.scenario_toml = scenario_toml
         self.out = out
 
@@ -88,8 +95,15 @@ def _override_list(overrides):
     return [str(o) for o in overrides]
 
 
-def simulate(scenario, law=None, overrides=None, *, out=None, progress=None):
-    """simulate(scenario, law=None, overrides=None, *, out=None, progress=None) -> SimulationResult
+def _shadow_override(shadow):
+    """run.shadow=[...] for a list of law specs (or one string holding a list); the scenario reader
+    checks each spec, with an error naming run.shadow."""
+    specs = [shadow] if isinstance(shadow, str) else [str(x) for x in shadow]
+    return "run.shadow=" + toml_value(specs, "run.shadow")
+
+
+def simulate(scenario, law=None, overrides=None, *, out=None, progress=None, shadow=None):
+    """simulate(scenario, law=None, overrides=None, *, out=None, progress=None, shadow=None) -> SimulationResult
 
     Runs a scenario exactly as ``frictionlab simulate SCENARIO [--law LAW] [--set K=V]... --out
     OUT`` does (the same C++ code: the same summary, the same trajectory, bit for bit).
@@ -112,6 +126,10 @@ def simulate(scenario, law=None, overrides=None, *, out=None, progress=None):
         ``progress(t, t_end)`` (both in s) is called about every 0.05 s of wall time while the
         run goes; returning False stops it (reason "interrupted"); an exception it raises stops
         the run and is raised again once the run's files are written.
+    shadow : list of str, optional
+        Law specs evaluated along the run beside its own law without changing it, like
+        ``--shadow`` (sets run.shadow): ``result.shadow`` holds shadow.csv as arrays and
+        ``result.summary["shadow"]`` their statistics (docs/dynamics.md §8).
 
     Returns
     -------
@@ -144,6 +162,8 @@ def simulate(scenario, law=None, overrides=None, *, out=None, progress=None):
         except ValueError as e:
             raise ValueError(f"law {law}: {e}") from None
         overrides.append(f"contact.law={law}")
+    if shadow is not None:
+        overrides.append(_shadow_override(shadow))
     if isinstance(scenario, dict):
         path, text = None, to_toml(scenario)
         source = str(scenario.get("name", "scenario"))
@@ -162,10 +182,26 @@ def _run(path, text, source, overrides, out_dir, progress, keep):
         summary = json.load(f)
     with open(os.path.join(out_dir, "scenario.toml"), encoding="utf-8") as f:
         scenario_toml = f.read()
-    result = SimulationResult(summary, trajectory, scenario_toml, out_dir if keep else None)
+    shadow = _read_shadow(os.path.join(out_dir, "shadow.csv")) if "shadow" in summary else None
+    result = SimulationResult(summary, trajectory, scenario_toml, out_dir if keep else None, shadow)
     if pending is not None:
         if isinstance(pending, KeyboardInterrupt):
             raise Interrupted(result) from pending
         pending.frictionlab_result = result
         raise pending
     return result
+
+
+def _read_shadow(path):
+    """shadow.csv as a dict of NumPy arrays by column (its header may quote a law spec)."""
+    import csv
+
+    import numpy as np
+
+    with open(path, encoding="utf-8", newline="") as f:
+        header = next(csv.reader(f))
+        rows = f.read().splitlines()
+    data = np.loadtxt(rows, delimiter=",", ndmin=2) if rows else np.empty((0, len(header)))
+    columns = {name: data[:, i].copy() for i, name in enumerate(header)}
+    columns["phase"] = columns["phase"].astype(np.int8)
+    return columns

@@ -66,6 +66,35 @@ def test_out_writes_the_command_lines_files(cli, scenarios, tmp_path):
         assert without_timing(json.load(f)) == without_timing(result.summary)
 
 
+def test_shadow_laws_come_back_as_arrays_like_the_command_lines_shadow_csv(cli, scenarios, tmp_path):
+    # A sphere spinning in place: U = 0 throughout, so every law's force error is exactly 0, and
+    # the run's own law against itself is exactly right at every sample (docs/dynamics.md §8).
+    path = os.path.join(scenarios, "sphere-spinning.toml")
+    run_cli(cli, "simulate", path, "--shadow", "exact,ellipsoidal", "--set", "run.t_end=0.2", "--out",
+            tmp_path / "cli")
+    result = frictionlab.simulate(path, overrides={"run.t_end": 0.2}, shadow=["exact", "ellipsoidal"],
+                                  out=tmp_path / "py")
+    for name in ("trajectory.csv", "shadow.csv"):
+        assert (tmp_path / "py" / name).read_bytes() == (tmp_path / "cli" / name).read_bytes(), name
+    shadow = result.shadow
+    assert list(shadow)[:7] == ["t", "phase", "s", "b_over_a", "a", "psi", "N"]
+    np.testing.assert_array_equal(shadow["t"], result.t)
+    assert shadow["phase"].dtype == np.int8
+    assert set(shadow["phase"]) == {3}  # rolling-spin: no slip, spinning
+    for out in ("dF1", "dF2", "dM", "dP"):
+        np.testing.assert_array_equal(shadow[f"{out}[exact]"], 0.0)
+        assert np.all(shadow[f"{out}[ellipsoidal]"] == 0.0) or out in ("dM", "dP")
+    laws = [law["law"] for law in result.summary["shadow"]["laws"]]
+    assert laws == ["exact", "ellipsoidal"]
+    assert frictionlab.simulate(path, overrides={"run.t_end": 0.05}).shadow is None
+
+
+def test_a_bad_shadow_law_is_the_scenario_readers_error(scenarios):
+    path = os.path.join(scenarios, "sphere-spinning.toml")
+    with pytest.raises(ValueError, match="run.shadow"):
+        frictionlab.simulate(path, shadow=["no-such-law"])
+
+
 def test_a_dict_runs_like_the_file_it_was_read_from(cli, scenarios, tmp_path):
     path = os.path.join(scenarios, "egg-printed-a.toml")
     with open(path, "rb") as f:

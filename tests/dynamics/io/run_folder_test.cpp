@@ -88,25 +88,43 @@ TEST(DynRunFolder, AFailedCloseIsTheOutputErrorUnlessOneIsRecorded) {
 }
 
 struct Counter : Observer {
-  int samples = 0, steps = 0;
+  int samples = 0, steps = 0, accepted_steps = 0;
+  bool wants = false;
   void sample(const Sample&) override { ++samples; }
   void step(double) override { ++steps; }
+  void accepted(const Sample&) override { ++accepted_steps; }
+  [[nodiscard]] bool wants_accepted_steps() const override { return wants; }
 };
 
-TEST(DynRunFolder, TheTeeReportsToBothObserversOrTheFirstAlone) {
+TEST(DynRunFolder, TheTeeReportsToEveryObserverAndSkipsNull) {
   Counter a, b;
   const StateVector x = StateVector::Zero();
   const ContactState c{};
   const Sample s{0.0, x, c};
-  TeeObserver<Observer, Sample> both(a, &b);
+  TeeObserver<Observer, Sample> both({&a, &b});
   both.sample(s);
   both.step(0.1);
-  TeeObserver<Observer, Sample> one(a, nullptr);
+  TeeObserver<Observer, Sample> one({&a, nullptr});
   one.sample(s);
   EXPECT_EQ(a.samples, 2);
   EXPECT_EQ(a.steps, 1);
   EXPECT_EQ(b.samples, 1);
   EXPECT_EQ(b.steps, 1);
+}
+
+TEST(DynRunFolder, TheTeeHandsAcceptedStepsOnlyToTheObserversThatAskForThem) {
+  Counter a, b;
+  b.wants = true;
+  const StateVector x = StateVector::Zero();
+  const ContactState c{};
+  const Sample s{0.0, x, c};
+  TeeObserver<Observer, Sample> none({&a});
+  EXPECT_FALSE(none.wants_accepted_steps());
+  TeeObserver<Observer, Sample> both({&a, &b});
+  EXPECT_TRUE(both.wants_accepted_steps());
+  both.accepted(s);
+  EXPECT_EQ(a.accepted_steps, 0);
+  EXPECT_EQ(b.accepted_steps, 1);
 }
 
 }  // namespace

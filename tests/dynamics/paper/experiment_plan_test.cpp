@@ -65,6 +65,24 @@ TEST(PaperExperimentPlan, BadNamesAndOverridesAreRejectedBeforeAnythingRuns) {
   rejects([](PlanOptions& o) { o.out_dir.clear(); }, "--out");
   rejects([](PlanOptions& o) { o.overrides = {"run.t_edn=1"}; }, "t_edn");
   rejects([](PlanOptions& o) { o.scenario_dir = "/no/such/folder"; }, "does not exist");
+  rejects([](PlanOptions& o) { o.overrides = {"run.shadow=[\"exact\"]"}; }, "--no-shadow");
+}
+
+TEST(PaperExperimentPlan, TheReferenceRunShadowsEveryOtherLawUnlessAskedNotTo) {
+  PlanOptions o = options();
+  o.eggs = {"egg-printed"};
+  o.cases = {"a"};
+  o.laws = {"pade-reconstructed", "exact", "exact:pressure=uniform"};
+  const auto runs = plan_runs(o);
+  ASSERT_EQ(runs.size(), 4u);
+  EXPECT_EQ(runs[1].law, "exact");
+  EXPECT_EQ(runs[1].scenario->run.shadow, (std::vector<std::string>{"pade-reconstructed", "exact:pressure=uniform"}));
+  for (const std::size_t other : {0u, 2u, 3u}) EXPECT_TRUE(runs[other].scenario->run.shadow.empty()) << other;
+  o.shadow = false;
+  for (const RunSpec& r : plan_runs(o)) EXPECT_TRUE(r.scenario->run.shadow.empty()) << r.label;
+  o.shadow = true;
+  o.laws = {"exact"};  // nothing to compare: no shadow laws
+  for (const RunSpec& r : plan_runs(o)) EXPECT_TRUE(r.scenario->run.shadow.empty()) << r.label;
 }
 
 TEST(PaperExperimentPlan, LawsMayBeSpecs) {

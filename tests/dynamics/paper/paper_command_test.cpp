@@ -106,7 +106,18 @@ TEST(PaperCommand, ATinyJobWritesRunsFiguresAndReport) {
   }
   for (const std::string f : {"behaviour.csv", "comparison.csv", "narrative.csv"})
     EXPECT_TRUE(std::filesystem::exists(dir / f)) << f;
+  // The error along the motion: pade-printed shadowed along the exact run, the two figures, the table.
+  EXPECT_TRUE(std::filesystem::exists(dir / "runs" / "egg-homogeneous-c" / "exact" / "shadow.csv"));
+  for (const std::string f : {"shadow-egg-homogeneous-c", "divergence-egg-homogeneous-c"}) {
+    EXPECT_TRUE(std::filesystem::exists(dir / "plots" / (f + ".gp"))) << f;
+    if (have_gnuplot) {
+      EXPECT_GT(std::filesystem::file_size(dir / "plots" / (f + ".png")), 0u) << f;
+    }
+  }
   const std::string report = slurp(dir / "experiments.md");
+  EXPECT_NE(report.find("## The error along the motion"), std::string::npos);
+  EXPECT_NE(report.find("| `pade-printed` |"), std::string::npos) << report;
+  EXPECT_EQ(report.find("-0 "), std::string::npos);
   EXPECT_NE(report.find("## Trajectory error against `exact`"), std::string::npos);
   EXPECT_NE(report.find("egg-homogeneous-c/pade-printed: law-pole"), std::string::npos);
   EXPECT_NE(slurp(dir / "runs/egg-homogeneous-c/pade-printed/summary.json").find("\"reason\": \"law-pole\""),

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -56,22 +57,34 @@ TEST(PaperRunRecord, ThinCsvKeepsTheHeaderEveryNthRowAndTheLast) {
 
 TEST(PaperRunRecord, TheComparisonSeriesReadsBackBitForBit) {
   const fs::path dir = scratch("series");
-  std::vector<double> t, g, m;
+  ComparisonSeries full;
   for (int i = 0; i <= 25; ++i) {
-    t.push_back(0.01 * i);
-    g.push_back(1.0 / (3.0 + i));
-    m.push_back(-0.1 * i / 7.0);
+    full.t.push_back(0.01 * i);
+    full.gamma3.push_back(1.0 / (3.0 + i));
+    full.gamma3_smooth.push_back(-0.1 * i / 7.0);
+    full.axis_x.push_back(std::sin(0.1 * i) / 3.0);
+    full.axis_y.push_back(-std::cos(0.1 * i) / 7.0);
+    full.axis_z.push_back(1.0 / (1.0 + i));
   }
-  const ComparisonSeries thinned = thin_series(t, g, m, 10);
+  const ComparisonSeries thinned = thin_series(full, 10);
   ASSERT_EQ(thinned.t.size(), 4u);  // 0, 10, 20, 25
-  EXPECT_EQ(thinned.t[3], t[25]);
+  EXPECT_EQ(thinned.t[3], full.t[25]);
+  EXPECT_EQ(thinned.axis_y[2], full.axis_y[20]);
   write_comparison_series(dir / "gamma3.csv", thinned);
   const ComparisonSeries back = read_comparison_series(dir / "gamma3.csv");
   EXPECT_EQ(back.t, thinned.t);
   EXPECT_EQ(back.gamma3, thinned.gamma3);
   EXPECT_EQ(back.gamma3_smooth, thinned.gamma3_smooth);
-  std::ofstream(dir / "bad.csv") << "t,gamma3,gamma3_mean_1s\n0,1\n";
+  EXPECT_EQ(back.axis_x, thinned.axis_x);
+  EXPECT_EQ(back.axis_y, thinned.axis_y);
+  EXPECT_EQ(back.axis_z, thinned.axis_z);
+  std::ofstream(dir / "bad.csv") << "t,gamma3,gamma3_mean_1s,axis_x,axis_y,axis_z\n0,1,2,3,4\n";
   EXPECT_THROW((void)read_comparison_series(dir / "bad.csv"), std::runtime_error);
+  std::ofstream(dir / "long.csv") << "t,gamma3,gamma3_mean_1s,axis_x,axis_y,axis_z\n0,1,2,3,4,5,6\n";
+  EXPECT_THROW((void)read_comparison_series(dir / "long.csv"), std::runtime_error);
+  // A record of an older job (without the axis) is not read back: the run is done again.
+  std::ofstream(dir / "old.csv") << "t,gamma3,gamma3_mean_1s\n0,1,2\n";
+  EXPECT_THROW((void)read_comparison_series(dir / "old.csv"), std::runtime_error);
   fs::remove_all(dir);
 }
 
