@@ -17,8 +17,9 @@ int bin_of(double value) {
   return std::min(kLogBins - 1, static_cast<int>(x));
 }
 
-double centre_of(int bin) {
-  return std::pow(10.0, kLogLowest + (bin + 0.5) / LogHistogram::kBinsPerDecade);
+// The value at the fraction f in [0, 1] of the bin's width in log(value).
+double inside(int bin, double f) {
+  return std::pow(10.0, kLogLowest + (bin + f) / LogHistogram::kBinsPerDecade);
 }
 
 }  // namespace
@@ -44,9 +45,11 @@ double LogHistogram::quantile(double q) const {
   double cumulative = zero_weight_;
   if (cumulative >= target && zero_weight_ > 0.0) return 0.0;
   for (std::size_t i = 0; i < bins_.size(); ++i) {
+    const double before = cumulative;
     cumulative += bins_[i];
     if (bins_[i] > 0.0 && cumulative >= target) {
-      return std::clamp(centre_of(static_cast<int>(i)), min_positive_, max_);
+      const double f = std::clamp((target - before) / bins_[i], 0.0, 1.0);
+      return std::clamp(inside(static_cast<int>(i), f), min_positive_, max_);
     }
   }
   return max_;  // rounding of the running sum: the last bin

@@ -1,10 +1,11 @@
 #pragma once
 // Weighted quantiles of a non-negative quantity over a long run, in constant memory: a histogram on
 // a logarithmic axis (kBinsPerDecade bins per decade from kLowest to kHighest), an exact zero bin,
-// and the exact largest value. A quantile is the geometric centre of the bin where the cumulative
-// weight reaches it, clamped to the smallest and largest values seen: within a factor
-// 10^(1/(2 kBinsPerDecade)) (2.9 %) of the exact weighted quantile; zero exactly when the quantile
-// falls on the zeros. Values below kLowest count in the lowest bin, above kHighest in the highest.
+// and the exact largest value. A quantile is read in the bin where the cumulative weight reaches
+// it, by linear interpolation of the cumulative weight in log(value) across the bin, and clamped to
+// the smallest and largest values seen: within the bin, i.e. within a factor 10^(1/kBinsPerDecade)
+// (2.3 %) of the exact weighted quantile; zero exactly when the quantile falls on the zeros. Values
+// below kLowest count in the lowest bin, above kHighest in the highest.
 // The shadow laws' statistics use it (dynamics/core/shadow_laws.h), weighting each state by the
 // time it stands for, so that a long run's median costs no memory per step.
 
@@ -14,7 +15,7 @@ namespace frictionlab::dynamics {
 
 class LogHistogram {
  public:
-  static constexpr int kBinsPerDecade = 40;
+  static constexpr int kBinsPerDecade = 100;
   static constexpr double kLowest = 1e-20;
   static constexpr double kHighest = 1e10;
 

@@ -25,7 +25,7 @@ support::Json shadow_json(const ShadowLaws& laws, const ShadowCsv* csv, double r
   j["evaluated_at"] =
       "statistics: the end of every accepted step, weighted by the step's length; shadow.csv: every output sample";
   j["errors_are"] = "|law - run's law| at the run's contact: F1, F2, F = hypot(F1, F2) per k N; M per k N a; P in W";
-  j["quantile_resolution"] = "within 2.9 % (a logarithmic histogram, 40 bins a decade); max exact";
+  j["quantile_resolution"] = "within 2.3 % (a logarithmic histogram, 100 bins a decade); max exact";
   j["steps"] = laws.steps();
   const MotionPhaseRule& r = laws.rule();
   j["phase_rule"] = {{"rest_slip_speed", r.rest_slip_speed},

@@ -16,7 +16,7 @@
 // that each phase of the motion (dynamics/core/motion_phase.h) counts by the time it lasts, not by
 // how many steps the integrator needed there (a bounce takes hundreds of steps a millisecond). The
 // median, 95th percentile and largest |error| per law, per output and per phase
-// (dynamics/core/log_histogram.h: quantiles within 2.9 %, the largest exact), and the energy each
+// (dynamics/core/log_histogram.h: quantiles within 2.3 %, the largest exact), and the energy each
 // law would have dissipated along the same path: the run's own dissipation (its friction work,
 // integrated with the state) plus the integral of dP, by the trapezoidal rule over the accepted
 // steps. The rule is applied to the difference only: on the run's own power it is ~1 % off over a

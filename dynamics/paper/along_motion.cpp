@@ -270,7 +270,7 @@ std::string parting_text(double t, const RunResult& run) {
 
 // One law's row of the table (c).
 std::string table_row(const RunResult& run, const support::Json* stats, double run_work, const DistanceSeries& d,
-                      double floor_parting) {
+                      const std::string& floor_text) {
   std::ostringstream row;
   row << "| `" << run.spec.label << "` | ";
   if (stats) {
@@ -284,7 +284,7 @@ std::string table_row(const RunResult& run, const support::Json* stats, double r
     row << "– | – | – | – | – | – | – | ";
   }
   row << parting_text(parting_time(d), run) << " | "
-      << (std::isnan(floor_parting) ? "–" : num(floor_parting, 3) + " s") << " |\n";
+      << floor_text << " |\n";
   return row.str();
 }
 
@@ -395,7 +395,7 @@ AlongMotion write_along_motion(const std::filesystem::path& plots_dir, const std
     }
     const bool shadowed = summary.contains("shadow");
     const double run_work = shadowed ? summary["shadow"]["run_work_J"].get<double>() : kNaN;
-    const double floor_parting = floor ? parting_time(floor_d) : kNaN;
+    const std::string floor_text = floor ? parting_text(parting_time(floor_d), *floor) : "– (no floor: --no-baseline)";
     report << "### " << case_title(*ref) << " (the `" << kReferenceLaw << "` run: " << end_of(*ref) << ")\n\n"
            << "| law | ΔF/kN median | 95 % | max | ΔM/kNa median | max | ΔE, J | failures | parts at | "
               "floor parts at |\n|---|---|---|---|---|---|---|---|---|---|\n";
@@ -406,7 +406,7 @@ AlongMotion write_along_motion(const std::filesystem::path& plots_dir, const std
           if (entry["law"] == laws[l]->spec.law) stats = &entry;
         }
       }
-      report << table_row(*laws[l], stats, run_work, series[l + (floor ? 1 : 0)], floor_parting);
+      report << table_row(*laws[l], stats, run_work, series[l + (floor ? 1 : 0)], floor_text);
     }
     report << "\n";
     if (std::filesystem::exists(shadow_data)) report << "![the error along the motion](plots/shadow-" << ref->spec.group() << ".png)\n";

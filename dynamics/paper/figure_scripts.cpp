@@ -26,7 +26,7 @@ constexpr const char* kFig2Terminal =
     "set encoding utf8\nset terminal pngcairo enhanced size 1800,660 font 'DejaVuSans,11'";
 // The key, across the top of the figure (drawn with the first panel).
 constexpr const char* kKey =
-    "set key at screen 0.5,0.955 center top horizontal maxcols 5 font ',10' samplen 4 spacing 1.1 width -3\n";
+    "set key at screen 0.5,0.955 center top vertical font ',10' samplen 4 spacing 1.05\n";
 constexpr const char* kFig2Key =
     "set key at screen 0.5,0.905 center top horizontal maxcols 5 font ',10' samplen 4 spacing 1.1 width -3\n";
 constexpr const char* kBand = "set style fill transparent solid 0.13 noborder";
@@ -74,10 +74,11 @@ constexpr std::array<const char*, 8> kDashes = {"1", "2", "3", "4", "(28,7)", "5
 std::string number(double x) { return support::significant(x, 4); }
 
 // Key entries stay short: a panel of fig. 2 is a third of the width, and the key must fit in it.
-std::string title_of(const FigureRun& r) {
+// A run's key entry; with `stop`, an early stop's reason and time too (fig. 3: its one label).
+std::string title_of(const FigureRun& r, bool stop = false) {
   std::string t = r.label;
   if (r.baseline) t += " (baseline)";
-  if (r.stopped_early) t += " (× = stop)";
+  if (r.stopped_early) t += stop ? " (× = " + r.stop + ")" : " (× = stop)";
   return t;
 }
 
@@ -138,10 +139,17 @@ LabelSide side_on_time_axis(const FigureRun& r, double t_axis) {
   return r.t_final > 0.6 * t_axis ? LabelSide::left : LabelSide::right;
 }
 
-// The plot command of one panel: the bands of every run first, then the lines, then a cross and a
-// label where each early-stopped run stopped.
+// How a panel draws the 5-95 % quantiles and where it says why a run stopped early.
+struct PanelStyle {
+  bool quantile_lines = false;  ///< thin lines in the run's colour and dash instead of filled bands
+  bool stop_labels = true;      ///< a label beside each stop's cross (else the key says it, once)
+};
+
+// The plot command of one panel: the bands (or quantile lines) of every run first, then the mean
+// lines, then a cross (and a label) where each early-stopped run stopped.
 std::string plot_command(const FigureGroup& g, const std::string& kind, const Columns& c, const Range& y,
-                         bool with_titles, const std::function<LabelSide(const FigureRun&)>& label_side) {
+                         bool with_titles, const std::function<LabelSide(const FigureRun&)>& label_side,
+                         const PanelStyle& panel_style = {}) {
   std::vector<std::string> bands, lines, stops;
   const std::string x = std::to_string(c.x);
   for (std::size_t i = 0; i < g.runs.size(); ++i) {
@@ -149,16 +157,23 @@ std::string plot_command(const FigureGroup& g, const std::string& kind, const Co
     const LineStyle style = line_style(r, i);
     const std::string colour = gnuplot_quoted(style.colour);
     const std::string data = gnuplot_quoted("data/" + r.stem + "." + kind + ".dat");
-    if (!r.stopped_early)  // near a pole the bins are meaningless: no band
+    if (!r.stopped_early && !panel_style.quantile_lines) {  // near a pole the bins are meaningless: no band
       bands.push_back(data + " using " + x + ":" + clipped(c.lo, y) + ":" + clipped(c.hi, y) +
                       " with filledcurves lc rgb " + colour + " notitle");
+    } else if (!r.stopped_early) {
+      for (const int q : {c.lo, c.hi}) {
+        bands.push_back(data + " using " + x + ":" + clipped(q, y) + " with lines lw 0.5 dt " + style.dash +
+                        " lc rgb " + colour + " notitle");
+      }
+    }
     lines.push_back(data + " using " + x + ":" + clipped(c.mean, y) + " with lines lw " +
-                    (i == 0 ? "1.6" : "1.4") + " dt " + style.dash + " lc rgb " + colour +
-                    (with_titles ? " title " + gnuplot_text(title_of(r)) : " notitle"));
+                    (i == 0 ? "1.8" : "1.6") + " dt " + style.dash + " lc rgb " + colour +
+                    (with_titles ? " title " + gnuplot_text(title_of(r, !panel_style.stop_labels)) : " notitle"));
     if (r.stopped_early) {
       const std::string end = gnuplot_quoted("data/" + r.stem + ".end.dat") + " using " + std::to_string(c.end_x) + ":" +
                               clipped(c.end_y, y);
       stops.push_back(end + " with points pt 2 ps 2.5 lw 2 lc rgb " + colour + " notitle");
+      if (!panel_style.stop_labels) continue;
       const bool left = label_side(r) == LabelSide::left;
       stops.push_back(end + ":(" + gnuplot_label_column_text(r.label + ": " + r.stop) + ") with labels " +
                       (left ? "right offset -1.5,0.8" : "left offset 1.5,0.8") + " font ',9' tc rgb " + colour +
@@ -182,6 +197,10 @@ std::string axis_settings(const Panel& panel, const Range& y) {
   return s + "set yrange [" + number(y.lo) + ":" + number(y.hi) + "]\n";
 }
 
+// fig. 3: six panels of one case, whose impacts spread the quantiles over decades: thin quantile
+// lines (a filled band there covers the means), and the early stops said once, in the key.
+const PanelStyle kFig3Style{true, false};
+
 std::string fig3(const FigureGroup& g, bool early) {
   const std::string kind = early ? "early" : "full";
   const std::string stem = "fig3-" + g.egg + "-" + g.case_id + (early ? "-early" : "");
@@ -189,7 +208,7 @@ std::string fig3(const FigureGroup& g, bool early) {
   s << "# " << stem << ".png: the paper's fig. 3 quantities against time, " << g.egg << ", case " << g.case_id
     << (early ? " (first seconds)" : "") << ".\n"
     << "# Lines: means (gamma3, b/a: of each time bin; |F|, |M|, a, N: over 2 s around it) from data/*." << kind
-    << ".dat; bands: 5-95 % quantiles.\n# Regenerate: gnuplot " << stem << ".gp\n"
+    << ".dat; thin lines: 5-95 % quantiles.\n# Regenerate: gnuplot " << stem << ".gp\n"
     << kFig3Terminal << "\nset output " << gnuplot_quoted(stem + ".png") << "\n"
     << kBand << "\n" << kClip << "\nset grid\nset xlabel 't (s)'\nset format y '%g'\nset datafile missing 'NaN'\n";
   if (early) s << "set xrange [0:" << kEarlyWindow << "]\n";
@@ -197,7 +216,7 @@ std::string fig3(const FigureGroup& g, bool early) {
   if (!early)
     for (const auto& r : g.runs) t_axis = std::max(t_axis, r.t_final);
   const auto label_side = [t_axis](const FigureRun& r) { return side_on_time_axis(r, t_axis); };
-  s << "set multiplot layout 3,2 margins 0.07,0.98,0.05,0.88 spacing 0.08,0.07 title "
+  s << "set multiplot layout 3,2 margins 0.07,0.98,0.05,0.83 spacing 0.08,0.07 title "
     << gnuplot_text(g.egg + ", case " + g.case_id + ": " + g.description +
                       (early ? " (first " + std::to_string(static_cast<int>(kEarlyWindow)) + " s)" : ""))
     << " font ',13'\n";
@@ -207,7 +226,7 @@ std::string fig3(const FigureGroup& g, bool early) {
     const Range y = axis_range(g, panel, early);
     s << axis_settings(panel, y)
       << plot_command(g, kind, {FigureColumns::t, panel.lo, panel.hi, panel.mean, EndColumns::t, panel.end}, y, p == 0,
-                      label_side);
+                      label_side, kFig3Style);
   }
   s << "unset multiplot\n";
   return s.str();

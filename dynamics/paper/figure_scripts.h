@@ -8,17 +8,19 @@
 //
 // What each panel draws:
 //   * every run of the group, the baseline (the reference law with tightened tolerances: the
-//     chaos floor) included, as its mean line over a translucent band of 5-95 % quantiles; all
-//     bands are drawn first, so that no band covers a line;
+//     chaos floor) included, as its mean line, with its 5-95 % quantiles beneath every mean line:
+//     a translucent band in fig. 2 (gamma3's nutation, a narrow band), two thin lines in the run's
+//     own colour and dash in fig. 3 (whose impacts spread them over decades: a band would cover
+//     the means);
 //   * each run in its own colour AND its own dash pattern (the figures survive grayscale);
 //   * |F|, |M| and N/(m g), dominated by the impacts of the bouncing phases, on log axes (four
 //     decades below 1.5x the highest band top of the runs that ended normally; values below are
 //     drawn at the bottom); a on a linear axis up to 1.05x that top; gamma3 and b/a on fixed axes;
 //   * a run that stopped early (the printed Padé law at its pole) as a cross where it stopped in
-//     THIS panel, labelled with its reason and time (clipped into the axis if off it; the label on
-//     the side of the cross away from the nearer edge: in fig. 2 to its left, as time runs right to
-//     left); no band (its bins near a pole are meaningless); the key says only that the cross marks
-//     its stop.
+//     every panel, and no band (its bins near a pole are meaningless); why and when it stopped is
+//     said once per figure, off the curves: in fig. 3 in its key entry, in fig. 2 (one panel per
+//     case, each with its own stop) beside the cross of that panel, on the side away from the
+//     nearer edge (to its left, as time runs right to left).
 
 #include <filesystem>
 #include <string>

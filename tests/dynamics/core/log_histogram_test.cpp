@@ -82,7 +82,7 @@ TEST(DynLogHistogram, ValuesBeyondTheAxisAreKeptInItsEndBins) {
   LogHistogram h;
   h.add(1e-30, 1.0);
   h.add(1e30, 1.0);
-  EXPECT_LE(h.quantile(0.0), LogHistogram::kLowest * kBinFactor);  // the lowest bin
+  EXPECT_LE(h.quantile(0.0), LogHistogram::kLowest * kBinFactor);  // in the lowest bin
   EXPECT_GE(h.quantile(1.0), LogHistogram::kHighest / kBinFactor);  // the highest bin
   EXPECT_EQ(h.max(), 1e30);                                          // exact
 }
