@@ -1,6 +1,6 @@
 #pragma once
 // The phases of a motion on the plane, state by state, for the statistics of the shadow laws
-// (dynamics/core/shadow_laws.h; docs/dynamics.md §8). Defined with the run's own thresholds, so that
+// (dynamics/core/shadow_laws.h; docs/dynamics.md §10). Defined with the run's own thresholds, so that
 // the phases mean for every model what its stops mean:
 //
 //   airborne      out of contact (no patch, N = 0): no friction, no error; only its time counts

@@ -1,6 +1,6 @@
 #pragma once
 // The "shadow" block of summary.json for a run with shadow laws (dynamics/core/shadow_laws.h;
-// docs/dynamics.md §8 lists its keys).
+// docs/dynamics.md §10 lists its keys).
 
 #include "dynamics/core/shadow_csv.h"
 #include "dynamics/core/shadow_laws.h"

@@ -2,7 +2,7 @@
 // Shadow laws: other friction laws evaluated along a run at the contact of every state the run
 // visits, without changing the run (the run's own law drives the motion). The question they answer
 // is how wrong a law's friction is *along a motion*: at the states a real motion passes through, in
-// the proportions it spends there (docs/dynamics.md §8).
+// the proportions it spends there (docs/dynamics.md §10).
 //
 // At a state with the contact input `in` (U, Omega, a, b, psi, N, k: bit for bit what the run's law
 // saw) and the run's law L0, each shadow law L gives, per unit of the scales every law shares,

@@ -81,6 +81,13 @@ EnsemblePlan EnsemblePlan::make(const Study& study) {
     } catch (const std::invalid_argument& e) {
       throw support::invalid_value("scenario (with the study's set)", study.scenario.string(), e.what());
     }
+    // Shadow laws are a single run's (frictionlab simulate, the paper job): an ensemble writes no
+    // per-run folders to put them in, and would drop them without a word.
+    const RunOptions& base_run = p.model_ == RunModel::puck ? p.puck_base_->run : p.base_->run;
+    if (!base_run.shadow.empty())
+      throw support::invalid_value("scenario (with the study's set)", study.scenario.string(),
+                                   "run.shadow is set: an ensemble does not evaluate shadow laws (run one start with "
+                                   "`frictionlab simulate SCENARIO --shadow LAWS`, or the paper job)");
     const std::string& resolved = p.model_ == RunModel::puck ? p.puck_base_->resolved_toml : p.base_->resolved_toml;
     p.hash_ = hex16(fnv1a64(resolved, fnv1a64(std::string_view("\0", 1), fnv1a64(study.canonical))));
     if (p.model_ == RunModel::puck) {

@@ -226,7 +226,7 @@ std::string divergence_script(const RunResult& ref, const std::vector<const RunR
     << "set ylabel 'angle between the axes, degrees'\nset grid xtics ytics lc rgb '#C8C8C8'\n"
     << "set key bottom right font ',10' samplen 4 box opaque\n"
     << "set arrow 1 from graph 0, first 1 to graph 1, first 1 nohead dt 3 lc rgb '#555555'\n"
-    << "set label 1 '1°: parted' at graph 0.995, first 1.6 right font ',9' tc rgb '#555555'\n";
+    << "set label 1 '1°: parted' at graph 0.01, first 1.6 left font ',9' tc rgb '#555555'\n";
   const std::string data = support::gnuplot_quoted("data/" + data_name);
   s << "plot ";
   int column = 2;

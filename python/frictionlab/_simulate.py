@@ -31,7 +31,7 @@ class SimulationResult:
         quaternion, body to world). One element per sample (every run.output_dt seconds, and the
         final time).
     shadow : dict of str -> numpy.ndarray, or None
-        With shadow laws (``shadow=[...]``), shadow.csv as arrays (docs/dynamics.md §8): t (s),
+        With shadow laws (``shadow=[...]``), shadow.csv as arrays (docs/dynamics.md §10): t (s),
         phase (int: 0 airborne, 1 bouncing, 2 sliding, 3 rolling-spin, 4 near-rest), s, b_over_a,
         a (m), psi (rad), N (N), and per shadow law LAW ``dF1[LAW]``, ``dF2[LAW]`` (per k N),
         ``dM[LAW]`` (per k N a), ``dP[LAW]`` (W): the law's friction minus the run's own at each
@@ -129,7 +129,7 @@ def simulate(scenario, law=None, overrides=None, *, out=None, progress=None, sha
     shadow : list of str, optional
         Law specs evaluated along the run beside its own law without changing it, like
         ``--shadow`` (sets run.shadow): ``result.shadow`` holds shadow.csv as arrays and
-        ``result.summary["shadow"]`` their statistics (docs/dynamics.md §8).
+        ``result.summary["shadow"]`` their statistics (docs/dynamics.md §10).
 
     Returns
     -------

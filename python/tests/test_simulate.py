@@ -68,7 +68,7 @@ def test_out_writes_the_command_lines_files(cli, scenarios, tmp_path):
 
 def test_shadow_laws_come_back_as_arrays_like_the_command_lines_shadow_csv(cli, scenarios, tmp_path):
     # A sphere spinning in place: U = 0 throughout, so every law's force error is exactly 0, and
-    # the run's own law against itself is exactly right at every sample (docs/dynamics.md §8).
+    # the run's own law against itself is exactly right at every sample (docs/dynamics.md §10).
     path = os.path.join(scenarios, "sphere-spinning.toml")
     run_cli(cli, "simulate", path, "--shadow", "exact,ellipsoidal", "--set", "run.t_end=0.2", "--out",
             tmp_path / "cli")

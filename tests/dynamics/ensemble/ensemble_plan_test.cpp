@@ -177,6 +177,8 @@ TEST(EnsemblePlan, BadKeysLawsAndScenariosAreOneLineNamingThem) {
       {head + "laws = [\"exact\"]\n[[vary]]\nkey = \"initial.omega\"\nvalues = [1]\n", "vary[0].key = 'initial.omega'"},
       {head + "laws = [\"exact\"]\nset = [\"contact.law=exact\"]\n", "set[0] = 'contact.law=exact'"},
       {head + "laws = [\"exact\"]\nset = [\"run.t_edn=1\"]\n", "run.t_edn"},
+      // Shadow laws belong to single runs: an ensemble says so rather than dropping them.
+      {head + "laws = [\"exact\"]\nset = [\"run.shadow=ellipsoidal\"]\n", "run.shadow is set"},
       {"scenario = \"no-such.toml\"\nlaws = [\"exact\"]\n", "no-such.toml"},
   };
   for (const auto& [text, key] : cases) {
