@@ -186,6 +186,56 @@ void divergence_figure(Writer& w, const std::string& title, const std::vector<st
   w.figure("divergence", s.str());
 }
 
+// The angle between the axes against time: per law (against the reference on its replica) and
+// for the floor, the median and quartiles over the runs compared at each time of kAxisAngleTimes.
+void axis_divergence_figure(Writer& w, const std::string& title, const std::vector<std::string>& laws,
+                            const std::vector<RunRecord>& rows) {
+  std::ostringstream plot;
+  bool any = false;
+  for (std::size_t i = 1; i <= laws.size(); ++i) {
+    const bool floor = i == laws.size();
+    std::string d = "# t (s), then the angle between the axes (degrees): 25 %, median, 75 % over the runs, runs\n";
+    bool rows_written = false;
+    for (std::size_t k = 0; k < kAxisAngleTimes.size(); ++k) {
+      std::vector<double> a;
+      for (const auto& r : rows) {
+        const bool mine = floor ? (r.law == laws.front() && r.diverge_ref.rfind("replica:", 0) == 0)
+                                : (r.law == laws[i] && r.diverge_ref == laws.front());
+        if (mine && k < r.axis_angle_deg.size() && std::isfinite(r.axis_angle_deg[k])) a.push_back(r.axis_angle_deg[k]);
+      }
+      if (a.empty()) continue;
+      d += num(kAxisAngleTimes[k]) + " " + num(quantile(a, 0.25)) + " " + num(quantile(a, 0.5)) + " " +
+           num(quantile(a, 0.75)) + " " + std::to_string(a.size()) + "\n";
+      rows_written = true;
+    }
+    if (!rows_written) continue;
+    const std::string file = "axis_divergence-" + std::to_string(i) + ".dat";
+    w.data(file, d);
+    const std::string colour = gnuplot_quoted(floor ? "#7F7F7F" : kColours[i % 7]);
+    const std::string dash = floor ? "1" : std::to_string(static_cast<int>(i % 4) + 2);
+    const std::string name = floor ? "floor: " + laws.front() + " vs its other replica" : laws[i] + " vs " + laws.front();
+    // Each curve its own point type as well as its colour and dash: the figure reads in grayscale.
+    const std::string point = floor ? "1" : std::to_string(4 + 2 * static_cast<int>(i % 5));
+    plot << (any ? ", \\\n     " : "plot ") << gnuplot_quoted(file) << " using 1:3 with linespoints lw 2.5 pt " << point
+         << " ps 1.1 dt " << dash << " lc rgb " << colour << " title " << gnuplot_text(name + " (median; thin: quartiles)");
+    for (const int q : {2, 4}) {
+      plot << ", \\\n     " << gnuplot_quoted(file) << " using 1:" << q << " with lines lw 0.8 dt " << dash
+           << " lc rgb " << colour << " notitle";
+    }
+    any = true;
+  }
+  if (!any) return;
+  std::ostringstream s;
+  s << "# axis_divergence.png: " << title << ": the angle between the runs' symmetry axes. Regenerate: gnuplot "
+    << "axis_divergence.gp\n"
+    << terminal(900, 560) << "\nset output 'axis_divergence.png'\nset grid\nset logscale xy\nset format y '10^{%T}'\n"
+    << "set xlabel 't (s), log scale'\nset ylabel 'angle between the axes (degrees)'\n"
+    << "set arrow 1 from graph 0, first 1 to graph 1, first 1 nohead dt 3 lc rgb '#555555'\n"
+    << "set key left top opaque box\nset title " << gnuplot_text(title + ": distance from the reference against the chaos floor")
+    << "\n" << plot.str() << "\n";
+  w.figure("axis_divergence", s.str());
+}
+
 double t_vertical_of(const RunRecord& r) { return r.t_vertical; }
 double final_gamma3_of(const RunRecord& r) { return r.final_gamma3; }
 double log10_ratio_of(const RunRecord& r) {
@@ -295,7 +345,10 @@ FiguresOutcome write_figures(const std::filesystem::path& dir, const std::string
   std::filesystem::create_directories(figures, ec);
   if (ec) throw support::OutputError("cannot create '" + figures.string() + "': " + ec.message());
   Writer w(figures, draw);
-  if (model == RunModel::body) divergence_figure(w, title, laws, rows);
+  if (model == RunModel::body) {
+    divergence_figure(w, title, laws, rows);
+    axis_divergence_figure(w, title, laws, rows);
+  }
   if (map) map_figures(w, title, laws, rows, *map, model);
   return w.out;
 }

@@ -6,6 +6,9 @@
 //                             reference on the same replica, and the floor's (the reference on
 //                             two replicas); empirical distribution functions over the compared
 //                             runs, so a curve ends at the share of runs that parted;
+//   axis_divergence.png       the angle between the runs' symmetry axes against time: per law
+//                             against the reference on the same replica, and the floor's; the
+//                             median over the compared runs and its quartiles (lines), log-log;
 //   map-final_class.png       (two varied keys on a grid) the outcome class most replicas of a
 //                             cell end in, one panel per law;
 //   map-t_vertical.png        the median time to the vertical (grey: never reached);

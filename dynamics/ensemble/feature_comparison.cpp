@@ -161,7 +161,8 @@ std::vector<ClassComparison> compare_classes(const std::vector<RunRecord>& rows,
   return out;
 }
 
-std::vector<DivergenceSummary> compare_divergence(const std::vector<RunRecord>& rows, const std::vector<std::string>& laws) {
+std::vector<DivergenceSummary> compare_divergence(const std::vector<RunRecord>& rows, const std::vector<std::string>& laws,
+                                                  double RunRecord::*time) {
   std::vector<DivergenceSummary> out;
   if (laws.empty()) return out;
   const double inf = std::numeric_limits<double>::infinity();
@@ -173,8 +174,9 @@ std::vector<DivergenceSummary> compare_divergence(const std::vector<RunRecord>& 
       if (!keep(r) || std::isnan(r.diverge_horizon)) continue;
       ++s.compared;
       horizons.push_back(r.diverge_horizon);
-      censored.push_back(std::isnan(r.t_diverge) ? inf : r.t_diverge);
-      if (!std::isnan(r.t_diverge)) parted.push_back(r.t_diverge);
+      const double t = r.*time;
+      censored.push_back(std::isnan(t) ? inf : t);
+      if (!std::isnan(t)) parted.push_back(t);
     }
     s.parted = static_cast<long>(parted.size());
     s.quantiles = quantiles_of(parted);

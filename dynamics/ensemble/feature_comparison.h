@@ -100,8 +100,11 @@ struct DivergenceSummary {
                                  ///< (half its median horizon if the floor never parts)
   double p = kNaN;
 };
+/// `time`: which parting time of the runs, RunRecord::t_diverge (gamma3 apart by 0.05, the
+/// default) or RunRecord::t_part (the symmetry axes 1 degree apart).
 [[nodiscard]] std::vector<DivergenceSummary> compare_divergence(const std::vector<RunRecord>& rows,
-                                                                const std::vector<std::string>& laws);
+                                                                const std::vector<std::string>& laws,
+                                                                double RunRecord::*time = &RunRecord::t_diverge);
 
 /// Whether the model's motion is deterministic, without chaos: its floor is zero (the puck).
 [[nodiscard]] inline bool floor_is_zero(RunModel model) { return model == RunModel::puck; }

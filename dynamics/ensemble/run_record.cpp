@@ -6,16 +6,24 @@
 
 #include "dynamics/ensemble/csv_row.h"
 #include "friction/support/errors.h"
+#include "friction/support/number_format.h"
 
 namespace frictionlab::dynamics::ensemble {
 namespace {
 
 const std::vector<std::string> kBefore = {"run", "start", "replica", "law"};
-const std::vector<std::string> kAfter = {
-    "reason",     "final_class",  "t_final",       "wall_time",     "steps",           "rhs_calls",
-    "t_vertical", "vertical_pole", "plateau_tilt_deg", "t_rest",    "final_gamma3",    "liftoffs",
-    "min_n_over_mg", "work_slide", "work_spin",     "spin_reversals", "t_first_reversal", "final_spin_sense",
-    "t_diverge",     "diverge_ref", "diverge_horizon", "message"};
+// The body's columns after the varied keys, the axis angles' named by their times.
+std::vector<std::string> body_after() {
+  std::vector<std::string> c = {
+      "reason",     "final_class",  "t_final",       "wall_time",     "steps",           "rhs_calls",
+      "t_vertical", "vertical_pole", "plateau_tilt_deg", "t_rest",    "final_gamma3",    "liftoffs",
+      "min_n_over_mg", "work_slide", "work_spin",     "spin_reversals", "t_first_reversal", "final_spin_sense",
+      "t_diverge",     "diverge_ref", "diverge_horizon", "t_part"};
+  for (const double t : kAxisAngleTimes) c.push_back("axis_deg_at_" + support::shortest(t));
+  c.push_back("message");
+  return c;
+}
+const std::vector<std::string> kAfter = body_after();
 const std::vector<std::string> kAfterPuck = {
     "reason",         "final_class",    "t_final",        "wall_time",            "steps",      "rhs_calls",
     "slip_stop_time", "spin_stop_time", "terminal_ratio", "terminal_ratio_limit", "path_along", "path_lateral",
@@ -134,6 +142,8 @@ std::string to_csv_row(const RunRecord& r) {
   num(r.t_diverge);
   text(r.diverge_ref);
   num(r.diverge_horizon);
+  num(r.t_part);
+  for (std::size_t k = 0; k < kAxisAngleTimes.size(); ++k) num(k < r.axis_angle_deg.size() ? r.axis_angle_deg[k] : kNaN);
   text(support::one_line(r.message));
   row.push_back('\n');
   return row;
@@ -187,6 +197,9 @@ RunRecord parse_run_row(std::string_view line, std::size_t key_count, RunModel m
   r.t_diverge = parse_number_field(f[i++], "t_diverge");
   r.diverge_ref = f[i++];
   r.diverge_horizon = parse_number_field(f[i++], "diverge_horizon");
+  r.t_part = parse_number_field(f[i++], "t_part");
+  for (std::size_t k = 0; k < kAxisAngleTimes.size(); ++k)
+    r.axis_angle_deg.push_back(parse_number_field(f[i++], "axis_deg_at"));
   r.message = f[i++];
   return r;
 }

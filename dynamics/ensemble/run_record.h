@@ -26,6 +26,13 @@
 //                                      the reference law's on the same replica (diverge_ref = that
 //                                      law); the reference law's run on replica 2p + 1 against its
 //                                      run on replica 2p (diverge_ref = "replica:2p": the chaos floor)
+//   t_part, axis_deg_at_<T>            against the same run: the first time the two bodies' symmetry
+//                                      axes (world axes, from the pose) are 1 degree apart (empty:
+//                                      not up to the horizon), and the angle between them (degrees)
+//                                      at each time T of kAxisAngleTimes (empty past the horizon)
+//                                      (dynamics/paper/divergence.h). Samples are interpolated
+//                                      (dynamics/ensemble/run_recorder.h): angles below ~1e-4 degree
+//                                      are that interpolation's error, not the runs'.
 //   message                            why a run stopped early or failed (one line)
 //
 // A puck study (dynamics/ensemble/run_model.h) has the puck's columns instead of the body's
@@ -37,6 +44,7 @@
 //
 // Numbers: shortest round-trip text; missing: empty.
 
+#include <array>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -47,6 +55,10 @@
 namespace frictionlab::dynamics::ensemble {
 
 inline constexpr double kNaN = paper::kNaN;
+
+/// The times (s) at which runs.csv keeps the angle between a run's axis and its partner's: a
+/// geometric sequence, two a decade, from the first tenth of a second to the longest runs.
+inline constexpr std::array<double, 9> kAxisAngleTimes = {0.1, 0.3, 1.0, 3.0, 10.0, 30.0, 100.0, 300.0, 1000.0};
 
 /// The puck's own features (dynamics/puck/puck_run.h).
 struct PuckFeatures {
@@ -87,6 +99,8 @@ struct RunRecord {
   double t_diverge = kNaN;
   std::string diverge_ref;
   double diverge_horizon = kNaN;
+  double t_part = kNaN;                ///< s: first time the symmetry axes are 1 degree apart
+  std::vector<double> axis_angle_deg;  ///< degrees at kAxisAngleTimes (empty or NaN: not compared)
   std::string message;
   PuckFeatures puck;  ///< a puck run's (model == puck); work_slide, work_spin above
 

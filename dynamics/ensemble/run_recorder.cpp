@@ -19,6 +19,10 @@ void RunRecorder::sample(const Sample& s) {
   series_.kinetic.push_back(s.kinetic);
   series_.spin.push_back(c.Omega);
   series_.in_contact.push_back(c.in_contact ? 1 : 0);
+  const Eigen::Vector3d axis = orientation_quaternion(s.x) * Eigen::Vector3d::UnitZ();  // the pose's
+  series_.axis_x.push_back(axis.x());
+  series_.axis_y.push_back(axis.y());
+  series_.axis_z.push_back(axis.z());
   if (decimation_dt_ <= 0.0) return;
 
   // Rows: the first sample at or after each multiple of dt, plus the latest sample as a

@@ -1,8 +1,9 @@
 #pragma once
 // What an ensemble keeps of a run while it runs, in memory only: the samples that the features
 // (dynamics/paper/run_features.h, spin_reversals.h) need — t, gamma3, Omega, kinetic energy, contact — in a
-// paper::RunSeries whose other columns stay empty, and, if asked, a decimated trajectory. About
-// 33 bytes per sample: 3.3 MB for 1000 s at output_dt = 0.01 s. No file is written.
+// paper::RunSeries whose other columns stay empty, the body's symmetry axis in world axes (for
+// the distance between two runs, dynamics/paper/divergence.h), and, if asked, a decimated
+// trajectory. About 57 bytes per sample: 5.7 MB for 1000 s at output_dt = 0.01 s. No file is written.
 //
 // Without a decimated trajectory the recorder takes interpolated samples (Observer::sample_accuracy):
 // the features read gamma3 only, at thresholds of 1e-3 and more, and the cubic Hermite interpolant

@@ -1,11 +1,14 @@
 #include "dynamics/ensemble/task_execution.h"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <exception>
+#include <numbers>
 
 #include "dynamics/ensemble/run_recorder.h"
 #include "dynamics/body/equations_of_motion.h"
+#include "dynamics/paper/divergence.h"
 #include "dynamics/paper/experiment_report.h"
 #include "dynamics/paper/spin_reversals.h"
 #include "dynamics/paper/trajectory_compare.h"
@@ -26,6 +29,7 @@ struct Reference {
   bool ran = false;
   std::vector<double> t;
   std::vector<double> gamma3;
+  std::array<std::vector<double>, 3> axis;  // the symmetry axis in world axes
   double dt = 0.0;  // its sample interval
 };
 
@@ -138,6 +142,7 @@ RunOutput run_one(const EnsemblePlan& plan, const RunId& id, const ExecuteOption
     out.series.dt = s.run.output_dt;
     out.series.t = std::move(series.t);
     out.series.gamma3 = std::move(series.gamma3);
+    out.series.axis = {std::move(series.axis_x), std::move(series.axis_y), std::move(series.axis_z)};
     out.finished.trajectory = std::move(recorder.trajectory());
   } catch (const std::exception& e) {
     r.reason = std::string(RunRecord::kFailed);
@@ -156,6 +161,15 @@ void compare(RunRecord& r, const Reference& own, const Reference& ref, const std
   r.diverge_ref = ref_name;
   r.diverge_horizon = d.horizon;
   r.t_diverge = d.found ? d.t : kNaN;
+  // The angle between the two bodies' axes (dynamics/paper/divergence.h).
+  const paper::DistanceSeries axes = paper::axis_distance(ref.t, ref.axis, own.t, own.axis);
+  if (axes.t.empty()) return;
+  r.t_part = paper::parting_time(axes);
+  r.axis_angle_deg.assign(kAxisAngleTimes.size(), kNaN);
+  for (std::size_t k = 0; k < kAxisAngleTimes.size(); ++k) {
+    const double T = kAxisAngleTimes[k];
+    if (T <= axes.t.back()) r.axis_angle_deg[k] = paper::interpolate(axes.t, axes.angle, T) * (180.0 / std::numbers::pi);
+  }
 }
 
 }  // namespace

@@ -67,6 +67,9 @@ TEST(EnsembleRunRecord, ARowReadsBackAsTheSameRecord) {
   r.final_spin_sense = -1;
   r.diverge_ref = "replica:0";
   r.diverge_horizon = 0.31;
+  r.t_part = 0.27;
+  r.axis_angle_deg = {1e-9, 0.5, std::nan(""), std::nan(""), std::nan(""), std::nan(""), std::nan(""), std::nan(""),
+                      std::nan("")};
   r.message = "the denominator of F2 passes through 0, \"here\"";
   const std::string row = to_csv_row(r);
   EXPECT_EQ(row.back(), '\n');
@@ -81,10 +84,15 @@ TEST(EnsembleRunRecord, ARowReadsBackAsTheSameRecord) {
   EXPECT_EQ(b.spin_reversals, 3);
   EXPECT_EQ(b.t_first_reversal, 1.25);
   EXPECT_EQ(b.final_spin_sense, -1);
+  EXPECT_EQ(b.t_part, 0.27);
+  ASSERT_EQ(b.axis_angle_deg.size(), kAxisAngleTimes.size());
+  EXPECT_EQ(b.axis_angle_deg[1], 0.5);
+  EXPECT_TRUE(std::isnan(b.axis_angle_deg[2]));
   EXPECT_EQ(run_index_of_row(row), 12);
   EXPECT_THROW((void)parse_run_row("1,2,3", 2), std::invalid_argument);
   EXPECT_EQ(runs_header({"initial.gamma3"}).rfind("run,start,replica,law,initial.gamma3,reason,", 0), 0u);
-  EXPECT_EQ(run_columns({"k"}).size(), 4u + 1u + 22u);
+  EXPECT_EQ(run_columns({"k"}).size(), 4u + 1u + 23u + kAxisAngleTimes.size());
+  EXPECT_NE(runs_header({"k"}).find(",t_part,axis_deg_at_0.1,axis_deg_at_0.3,axis_deg_at_1,"), std::string::npos);
 }
 
 TEST(EnsembleRunRecord, OutcomeClassesFollowTheEndAndTheFinalTilt) {

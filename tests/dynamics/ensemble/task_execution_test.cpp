@@ -89,6 +89,32 @@ TEST(EnsembleTaskExecution, EveryRunIsEmittedWithItsComparison) {
   }
 }
 
+// The distance between the bodies' axes: exactly zero between two runs of the same law (exact and
+// exact:pressure=hertz are one law), positive and growing between the reference's two replicas.
+TEST(EnsembleTaskExecution, TheAxesOfTheSameLawsRunsAreExactlyTogetherAndTheFloorsPartMoreAndMore) {
+  const EnsemblePlan p = EnsemblePlan::make(parse_study(R"(scenario = "../scenarios/egg-printed-a.toml"
+laws = ["exact", "exact:pressure=hertz"]
+set = ["run.t_end=3.5", "run.output_dt=0.01"]
+[replicas]
+count = 2
+size = 1e-6
+)",
+                                                        "t.toml", kStudies));
+  const auto rows = run_task(p, whole(p));
+  ASSERT_EQ(rows.size(), 4u);
+  for (const long run : {1L, 3L}) {  // the same law against the reference on its replica
+    ASSERT_EQ(rows.at(run).axis_angle_deg.size(), kAxisAngleTimes.size());
+    EXPECT_TRUE(std::isnan(rows.at(run).t_part));
+    for (std::size_t k = 0; k < 4; ++k) EXPECT_EQ(rows.at(run).axis_angle_deg[k], 0.0) << kAxisAngleTimes[k];
+    for (std::size_t k = 4; k < kAxisAngleTimes.size(); ++k) EXPECT_TRUE(std::isnan(rows.at(run).axis_angle_deg[k]));
+  }
+  const RunRecord& floor = rows.at(2);  // the reference on replica 1 against replica 0
+  EXPECT_EQ(floor.diverge_ref, "replica:0");
+  ASSERT_EQ(floor.axis_angle_deg.size(), kAxisAngleTimes.size());
+  for (std::size_t k = 0; k < 4; ++k) EXPECT_GT(floor.axis_angle_deg[k], 0.0) << kAxisAngleTimes[k];
+  EXPECT_GT(floor.axis_angle_deg[3], 10.0 * floor.axis_angle_deg[0]) << "3 s against 0.1 s";
+}
+
 TEST(EnsembleTaskExecution, AResumedTaskRecomputesItsReferenceAndGivesTheSameRows) {
   const EnsemblePlan p = plan();
   auto all = run_task(p, whole(p));

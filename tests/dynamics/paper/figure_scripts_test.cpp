@@ -191,7 +191,9 @@ TEST(PaperFigureScripts, ImpactQuantitiesOnLogAxesAndQuantileLinesBeneathTheMean
       }
       ++quantile_lines;
       EXPECT_FALSE(mean_seen) << "a quantile line drawn over a mean: " << e;
-      if (quantile_lines % 2 == 1) EXPECT_TRUE(has(e, "$" + std::to_string(band_lo[p]) + ",")) << p << ": " << e;
+      if (quantile_lines % 2 == 1) {
+        EXPECT_TRUE(has(e, "$" + std::to_string(band_lo[p]) + ",")) << p << ": " << e;
+      }
     }
     EXPECT_EQ(quantile_lines, 8) << p;  // two for every run but the one stopped early
   }
