@@ -236,6 +236,54 @@ void axis_divergence_figure(Writer& w, const std::string& title, const std::vect
   w.figure("axis_divergence", s.str());
 }
 
+// The shadow laws' errors along the reference's runs: per law, the distribution over the runs of
+// each run's median |dF| per kN (thick) and of its largest (thin, the same colour and dash).
+void shadow_figure(Writer& w, const std::string& title, const std::vector<std::string>& shadow_laws,
+                   const std::vector<RunRecord>& rows) {
+  std::ostringstream plot;
+  bool any = false;
+  for (std::size_t l = 0; l < shadow_laws.size(); ++l) {
+    std::vector<double> typical;
+    std::vector<double> worst;
+    for (const auto& r : rows) {
+      if (l >= r.shadow.size() || !r.shadow[l].evaluated()) continue;
+      if (r.shadow[l].F_median > 0.0) typical.push_back(r.shadow[l].F_median);
+      if (r.shadow[l].F_max > 0.0) worst.push_back(r.shadow[l].F_max);
+    }
+    long runs = 0;
+    for (const auto& r : rows) runs += l < r.shadow.size() && r.shadow[l].evaluated() ? 1 : 0;
+    if (runs == 0) continue;
+    const std::string colour = gnuplot_quoted(kColours[(l + 1) % 7]);
+    const std::string dash = std::to_string(static_cast<int>(l % 4) + 1);
+    for (const bool thick : {true, false}) {
+      std::vector<double>& v = thick ? typical : worst;
+      if (v.empty()) continue;
+      std::sort(v.begin(), v.end());
+      std::string d = std::string("# ") + (thick ? "median" : "largest") + " |dF|/(kN) along a run, share of the " +
+                      std::to_string(runs) + " reference runs at or below it\n";
+      for (std::size_t k = 0; k < v.size(); ++k)
+        d += num(v[k]) + " " + num(static_cast<double>(k + 1) / static_cast<double>(runs)) + "\n";
+      const std::string file = "shadow_errors-" + std::to_string(l) + (thick ? "-median" : "-max") + ".dat";
+      w.data(file, d);
+      plot << (any ? ", \\\n     " : "plot ") << gnuplot_quoted(file) << " using 1:2 with steps lw "
+           << (thick ? "2.5" : "1") << " dt " << dash << " lc rgb " << colour << " title "
+           << gnuplot_text(shadow_laws[l] + (thick ? ": median along the run" : ": largest along the run"));
+      any = true;
+    }
+  }
+  if (!any) return;
+  std::ostringstream s;
+  s << "# shadow_errors.png: " << title << ": the shadow laws' force error along the reference's runs. Regenerate: "
+    << "gnuplot shadow_errors.gp\n"
+    << terminal(1150, 560) << "\nset output 'shadow_errors.png'\nset grid\nset logscale x\nset format x '10^{%T}'\n"
+    << "set xlabel '|ΔF|/(kN) along a run of the reference law (log scale)'\n"
+    << "set ylabel 'share of the reference runs at or below'\nset yrange [0:1.02]\n"
+    << "set key outside right top vertical box\n"
+    << "set title " << gnuplot_text(title + ": each law's friction force error along the reference's motion") << "\n"
+    << plot.str() << "\n";
+  w.figure("shadow_errors", s.str());
+}
+
 double t_vertical_of(const RunRecord& r) { return r.t_vertical; }
 double final_gamma3_of(const RunRecord& r) { return r.final_gamma3; }
 double log10_ratio_of(const RunRecord& r) {
@@ -339,7 +387,7 @@ void map_figures(Writer& w, const std::string& title, const std::vector<std::str
 
 FiguresOutcome write_figures(const std::filesystem::path& dir, const std::string& title, const std::vector<std::string>& laws,
                              const std::vector<RunRecord>& rows, const std::optional<OutcomeMap>& map, bool draw,
-                             RunModel model) {
+                             RunModel model, const std::vector<std::string>& shadow_laws) {
   const std::filesystem::path figures = dir / "figures";
   std::error_code ec;
   std::filesystem::create_directories(figures, ec);
@@ -349,6 +397,7 @@ FiguresOutcome write_figures(const std::filesystem::path& dir, const std::string
     divergence_figure(w, title, laws, rows);
     axis_divergence_figure(w, title, laws, rows);
   }
+  shadow_figure(w, title, shadow_laws, rows);
   if (map) map_figures(w, title, laws, rows, *map, model);
   return w.out;
 }

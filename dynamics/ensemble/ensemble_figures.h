@@ -9,6 +9,9 @@
 //   axis_divergence.png       the angle between the runs' symmetry axes against time: per law
 //                             against the reference on the same replica, and the floor's; the
 //                             median over the compared runs and its quartiles (lines), log-log;
+//   shadow_errors.png         (a study with shadow laws) per shadow law, the distribution over the
+//                             reference law's runs of each run's median |ΔF|/(kN) along its
+//                             motion (thick) and of its largest (thin);
 //   map-final_class.png       (two varied keys on a grid) the outcome class most replicas of a
 //                             cell end in, one panel per law;
 //   map-t_vertical.png        the median time to the vertical (grey: never reached);
@@ -40,6 +43,7 @@ struct FiguresOutcome {
 [[nodiscard]] FiguresOutcome write_figures(const std::filesystem::path& dir, const std::string& title,
                                            const std::vector<std::string>& laws, const std::vector<RunRecord>& rows,
                                            const std::optional<OutcomeMap>& map, bool draw,
-                                           RunModel model = RunModel::body);
+                                           RunModel model = RunModel::body,
+                                           const std::vector<std::string>& shadow_laws = {});
 
 }  // namespace frictionlab::dynamics::ensemble

@@ -1,5 +1,6 @@
 #include "dynamics/ensemble/ensemble_plan.h"
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -81,13 +82,13 @@ EnsemblePlan EnsemblePlan::make(const Study& study) {
     } catch (const std::invalid_argument& e) {
       throw support::invalid_value("scenario (with the study's set)", study.scenario.string(), e.what());
     }
-    // Shadow laws are a single run's (frictionlab simulate, the paper job): an ensemble writes no
-    // per-run folders to put them in, and would drop them without a word.
+    // The study's `shadow` says which laws the reference's runs evaluate; a scenario's run.shadow
+    // would say it a second time, for every law's runs.
     const RunOptions& base_run = p.model_ == RunModel::puck ? p.puck_base_->run : p.base_->run;
     if (!base_run.shadow.empty())
       throw support::invalid_value("scenario (with the study's set)", study.scenario.string(),
-                                   "run.shadow is set: an ensemble does not evaluate shadow laws (run one start with "
-                                   "`frictionlab simulate SCENARIO --shadow LAWS`, or the paper job)");
+                                   "run.shadow is set: in a study the shadow laws are the study's `shadow` key (by "
+                                   "default the compared laws, along the reference law's runs)");
     const std::string& resolved = p.model_ == RunModel::puck ? p.puck_base_->resolved_toml : p.base_->resolved_toml;
     p.hash_ = hex16(fnv1a64(resolved, fnv1a64(std::string_view("\0", 1), fnv1a64(study.canonical))));
     if (p.model_ == RunModel::puck) {
@@ -109,6 +110,24 @@ EnsemblePlan EnsemblePlan::make(const Study& study) {
         }
       } catch (const std::invalid_argument& e) {
         throw support::invalid_value("laws[" + std::to_string(i) + "]", std::string_view(study.laws[i]), e.what());
+      }
+    }
+    if (study.shadow_compared) {
+      const Variant reference = parse_variant(study.laws.front(), "laws[0]");
+      for (std::size_t i = 1; i < study.laws.size(); ++i) {
+        const Variant v = parse_variant(study.laws[i], "laws[" + std::to_string(i) + "]");
+        if (v.patch != reference.patch || v.law == reference.law) continue;
+        if (std::find(p.shadow_laws_.begin(), p.shadow_laws_.end(), v.law) == p.shadow_laws_.end())
+          p.shadow_laws_.push_back(v.law);
+      }
+    } else {
+      for (std::size_t i = 0; i < study.shadow_laws.size(); ++i) {
+        try {
+          (void)friction::make_law(study.shadow_laws[i]);
+        } catch (const std::invalid_argument& e) {
+          throw support::invalid_value("shadow[" + std::to_string(i) + "]", std::string_view(study.shadow_laws[i]), e.what());
+        }
+        p.shadow_laws_.push_back(study.shadow_laws[i]);
       }
     }
     for (std::size_t i = 0; i < study.vary.size(); ++i)

@@ -77,6 +77,12 @@ class EnsemblePlan {
   [[nodiscard]] puck::PuckScenario puck_scenario(const RunId& id) const;
   /// The model every run of the study integrates.
   [[nodiscard]] RunModel model() const { return model_; }
+  /// The laws the reference law's runs evaluate along their motion (dynamics/core/shadow_laws.h;
+  /// runs.csv's shadow columns are named by them): the study's `shadow` list, or by default the
+  /// law of every compared variant under the reference's contact model (a variant under another
+  /// model has another contact to evaluate at: its runs are compared by their trajectories only),
+  /// each once, the reference's own law left out.
+  [[nodiscard]] const std::vector<std::string>& shadow_laws() const { return shadow_laws_; }
 
   [[nodiscard]] long tasks() const { return starts() * pairs_per_start(); }
   [[nodiscard]] Task task(long index) const;
@@ -94,6 +100,7 @@ class EnsemblePlan {
   std::shared_ptr<const puck::PuckScenario> puck_base_;   // model puck
   RunModel model_ = RunModel::body;
   std::vector<VariedKey> keys_;
+  std::vector<std::string> shadow_laws_;
   std::vector<std::vector<double>> starts_;
   double rate_scale_ = 0.0;
   std::string hash_;

@@ -243,6 +243,56 @@ void divergence_section(std::ostringstream& s, const std::vector<std::string>& l
   }
 }
 
+// The shadow laws along the reference's runs (run_record.h: the shadow columns).
+void shadow_section(std::ostringstream& s, const std::string& reference, const std::vector<std::string>& shadow_laws,
+                    const std::vector<RunRecord>& rows, const std::vector<std::string>& figures) {
+  s << "## Each law's friction along the reference's motion\n\n"
+    << "Every run of `" << reference
+    << "` evaluates these laws at the contact of each state it passes through, without changing the run "
+       "(dynamics/core/shadow_laws.h), every contact state weighted by the time spent there. Per run: the median, "
+       "95 % and largest |ΔF| per kN (k·N: the friction bound; ΔF the tangential force's error as a vector) and "
+       "|ΔM| per kNa, and ΔE, what the law would dissipate along the run minus what the run did, over the run's "
+       "friction work W. Over the runs: the median of each run's value, the largest of the largest, and the 5–95 % "
+       "range of ΔE/W.\n\n"
+       "| law | runs | ΔF/kN median | ΔF/kN 95 % | ΔF/kN worst | ΔM/kNa median | ΔM/kNa worst | ΔE/W median | "
+       "ΔE/W 5–95 % | failed states (runs) |\n|---|---|---|---|---|---|---|---|---|---|\n";
+  for (std::size_t l = 0; l < shadow_laws.size(); ++l) {
+    std::vector<double> f50, f95, m50, rel;
+    double f_max = kNaN;
+    double m_max = kNaN;
+    long runs = 0;
+    long failed = 0;
+    long failed_runs = 0;
+    for (const auto& r : rows) {
+      if (l >= r.shadow.size() || !r.shadow[l].evaluated()) continue;
+      const ShadowColumns& c = r.shadow[l];
+      ++runs;
+      failed += c.failures;
+      failed_runs += c.failures > 0 ? 1 : 0;
+      const auto keep = [](std::vector<double>& v, double x) {
+        if (std::isfinite(x)) v.push_back(x);
+      };
+      keep(f50, c.F_median);
+      keep(f95, c.F_p95);
+      keep(m50, c.M_median);
+      if (std::isfinite(c.F_max)) f_max = std::isnan(f_max) ? c.F_max : std::max(f_max, c.F_max);
+      if (std::isfinite(c.M_max)) m_max = std::isnan(m_max) ? c.M_max : std::max(m_max, c.M_max);
+      const double work = r.work_slide + r.work_spin;
+      if (work > 0.0 && std::isfinite(c.dE)) rel.push_back(c.dE / work);
+    }
+    const auto percent = [](double x) { return std::isnan(x) ? std::string("–") : support::significant(100.0 * x, 3) + " %"; };
+    s << "| " << shadow_laws[l] << " | " << runs << " | " << n3(quantile(f50, 0.5)) << " | " << n3(quantile(f95, 0.5))
+      << " | " << n3(f_max) << " | " << n3(quantile(m50, 0.5)) << " | " << n3(m_max) << " | "
+      << percent(quantile(rel, 0.5)) << " | " << percent(quantile(rel, 0.05)) << " to " << percent(quantile(rel, 0.95))
+      << " | " << failed << " (" << failed_runs << ") |\n";
+  }
+  s << "\n";
+  for (const auto& f : figures)
+    if (f == "figures/shadow_errors.png")
+      s << "Over the reference's runs: the share of runs whose median (thick) or largest (thin) |ΔF|/(kN) along the "
+           "motion is at most the value.\n\n![the force errors along the motion](" << f << ")\n\n";
+}
+
 void map_section(std::ostringstream& s, const OutcomeMap& m, const std::vector<std::string>& figures) {
   s << "## Maps over `" << m.axes.x_key << "` × `" << m.axes.y_key << "`\n\n"
     << "Per cell (one start, its replicas) and law but the reference: *chaotic* where the reference's own "
@@ -295,7 +345,8 @@ void cost_section(std::ostringstream& s, const std::vector<std::string>& laws, c
 
 }  // namespace
 
-std::vector<RunRecord> read_runs(const std::filesystem::path& runs_csv, std::size_t key_count, RunModel model) {
+std::vector<RunRecord> read_runs(const std::filesystem::path& runs_csv, std::size_t key_count, RunModel model,
+                                 std::size_t shadow_count) {
   std::istringstream in(support::read_file(runs_csv, "runs file"));
   std::string line;
   std::getline(in, line);  // header
@@ -304,7 +355,7 @@ std::vector<RunRecord> read_runs(const std::filesystem::path& runs_csv, std::siz
   while (std::getline(in, line)) {
     ++number;
     try {
-      rows.push_back(parse_run_row(line, key_count, model));
+      rows.push_back(parse_run_row(line, key_count, model, shadow_count));
     } catch (const std::invalid_argument& e) {
       throw std::invalid_argument(runs_csv.string() + ":" + std::to_string(number) + ": " + e.what());
     }
@@ -337,6 +388,7 @@ std::string report_markdown(const EnsemblePlan& plan, const std::vector<RunRecor
   features_section(s, laws, rows, model);
   // The puck's runs are compared by their features, not along the trajectory.
   if (laws.size() > 1 && model == RunModel::body) divergence_section(s, laws, rows, figures);
+  if (!plan.shadow_laws().empty()) shadow_section(s, laws.front(), plan.shadow_laws(), rows, figures);
   if (const auto axes = map_axes(plan.study())) map_section(s, build_outcome_map(*axes, laws, rows), figures);
   cost_section(s, laws, rows);
   return s.str();
@@ -344,18 +396,19 @@ std::string report_markdown(const EnsemblePlan& plan, const std::vector<RunRecor
 
 ReportOutcome write_report(const EnsemblePlan& plan, const std::filesystem::path& dir, const std::string& command,
                            bool draw) {
-  const auto rows = read_runs(dir / "runs.csv", plan.study().vary.size(), plan.model());
+  const auto rows = read_runs(dir / "runs.csv", plan.study().vary.size(), plan.model(), plan.shadow_laws().size());
   std::optional<OutcomeMap> map;
   if (const auto axes = map_axes(plan.study())) map = build_outcome_map(*axes, plan.study().laws, rows);
   ReportOutcome out;
-  out.figures = write_figures(dir, plan.study().name, plan.study().laws, rows, map, draw, plan.model());
+  out.figures = write_figures(dir, plan.study().name, plan.study().laws, rows, map, draw, plan.model(), plan.shadow_laws());
   // Link the figures that exist (drawn now, or by an earlier run of gnuplot).
   std::vector<std::string> links;
   const bool puck = plan.model() == RunModel::puck;
   const std::vector<std::string> entries =
-      puck ? std::vector<std::string>{"map-final_class", "map-log10_terminal_ratio", "map-path_lateral", "map-changes"}
-           : std::vector<std::string>{"divergence", "axis_divergence", "map-final_class", "map-t_vertical",
-                                      "map-final_gamma3", "map-changes"};
+      puck ? std::vector<std::string>{"shadow_errors", "map-final_class", "map-log10_terminal_ratio", "map-path_lateral",
+                                      "map-changes"}
+           : std::vector<std::string>{"divergence", "axis_divergence", "shadow_errors", "map-final_class",
+                                      "map-t_vertical", "map-final_gamma3", "map-changes"};
   for (const auto& entry : entries) {
     const std::string f = std::string("figures/") + entry + ".png";
     if (std::filesystem::exists(dir / f)) links.push_back(f);

@@ -18,7 +18,7 @@ namespace frictionlab::dynamics::ensemble {
 
 /// The rows of DIR/runs.csv (std::invalid_argument naming the file and line for a bad row).
 [[nodiscard]] std::vector<RunRecord> read_runs(const std::filesystem::path& runs_csv, std::size_t key_count,
-                                               RunModel model = RunModel::body);
+                                               RunModel model = RunModel::body, std::size_t shadow_count = 0);
 
 /// "AMD EPYC 7B13 (2 cores), Linux 6.1.0": the machine a report was made on.
 [[nodiscard]] std::string machine_description();

@@ -56,7 +56,7 @@ EnsembleSession::EnsembleSession(const EnsemblePlan& plan, SessionOptions option
     throw std::invalid_argument("--hdf5: a puck study keeps no trajectories (its features come from each run's summary)");
   const auto manifest = dir / "ensemble.json";
   const auto runs = dir / "runs.csv";
-  const std::string header = runs_header(keys_of(plan.study()), plan.model());
+  const std::string header = runs_header(keys_of(plan.study()), plan.model(), plan.shadow_laws());
   std::error_code ec;
   if (std::filesystem::exists(dir, ec) && !std::filesystem::is_directory(dir, ec))
     throw std::invalid_argument("--out " + dir.string() + " is not a folder");

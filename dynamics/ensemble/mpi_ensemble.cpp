@@ -251,7 +251,8 @@ void coordinate(EnsembleSession& session, int ranks, int local_threads, const Jo
       case kRow: {
         const std::string row = receive_text(from, kRow);
         FinishedRun run;
-        run.record = parse_run_row(std::string_view(row).substr(0, row.size() - 1), keys, session.plan().model());
+        run.record = parse_run_row(std::string_view(row).substr(0, row.size() - 1), keys, session.plan().model(),
+                                   session.plan().shadow_laws().size());
         if (options.trajectories) {
           MPI_Status ts;
           MPI_Probe(from, kTrajectory, MPI_COMM_WORLD, &ts);

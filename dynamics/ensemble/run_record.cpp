@@ -64,17 +64,26 @@ std::string puck_outcome_class(std::string_view reason, double terminal_ratio) {
   return "together";
 }
 
-std::vector<std::string> run_columns(const std::vector<std::string>& keys, RunModel model) {
+const std::array<const char*, 7>& shadow_column_names() {
+  static const std::array<const char*, 7> names = {"F_median", "F_p95", "F_max", "M_median", "M_max", "dE", "failures"};
+  return names;
+}
+
+std::vector<std::string> run_columns(const std::vector<std::string>& keys, RunModel model,
+                                     const std::vector<std::string>& shadow_laws) {
   std::vector<std::string> c = kBefore;
   c.insert(c.end(), keys.begin(), keys.end());
   const auto& after = after_keys(model);
-  c.insert(c.end(), after.begin(), after.end());
+  c.insert(c.end(), after.begin(), after.end() - 1);  // the shadow columns come before the message
+  for (const auto& law : shadow_laws)
+    for (const char* name : shadow_column_names()) c.push_back("shadow_" + std::string(name) + "[" + law + "]");
+  c.push_back(after.back());
   return c;
 }
 
-std::string runs_header(const std::vector<std::string>& keys, RunModel model) {
+std::string runs_header(const std::vector<std::string>& keys, RunModel model, const std::vector<std::string>& shadow_laws) {
   std::string h;
-  for (const auto& c : run_columns(keys, model)) {
+  for (const auto& c : run_columns(keys, model, shadow_laws)) {
     if (!h.empty()) h.push_back(',');
     append_text_field(h, c);
   }
@@ -107,6 +116,16 @@ std::string to_csv_row(const RunRecord& r) {
     row.push_back(',');
     append_text_field(row, s);
   };
+  const auto shadow_fields = [&] {
+    for (const ShadowColumns& c : r.shadow) {
+      for (const double x : {c.F_median, c.F_p95, c.F_max, c.M_median, c.M_max, c.dE}) num(x);
+      if (c.evaluated()) {
+        integer(c.failures);
+      } else {
+        row.push_back(',');
+      }
+    }
+  };
   text(r.reason);
   text(r.final_class);
   num(r.t_final);
@@ -123,6 +142,7 @@ std::string to_csv_row(const RunRecord& r) {
     num(r.puck.turned);
     num(r.work_slide);
     num(r.work_spin);
+    shadow_fields();
     text(support::one_line(r.message));
     row.push_back('\n');
     return row;
@@ -144,14 +164,16 @@ std::string to_csv_row(const RunRecord& r) {
   num(r.diverge_horizon);
   num(r.t_part);
   for (std::size_t k = 0; k < kAxisAngleTimes.size(); ++k) num(k < r.axis_angle_deg.size() ? r.axis_angle_deg[k] : kNaN);
+  shadow_fields();
   text(support::one_line(r.message));
   row.push_back('\n');
   return row;
 }
 
-RunRecord parse_run_row(std::string_view line, std::size_t key_count, RunModel model) {
+RunRecord parse_run_row(std::string_view line, std::size_t key_count, RunModel model, std::size_t shadow_count) {
   const std::vector<std::string> f = split_csv_line(line);
-  const std::size_t expected = kBefore.size() + key_count + after_keys(model).size();
+  const std::size_t expected =
+      kBefore.size() + key_count + after_keys(model).size() + shadow_count * shadow_column_names().size();
   if (f.size() != expected)
     throw std::invalid_argument("a row of runs.csv has " + std::to_string(f.size()) + " fields, not " +
                                 std::to_string(expected));
@@ -169,6 +191,16 @@ RunRecord parse_run_row(std::string_view line, std::size_t key_count, RunModel m
   r.steps = parse_integer(f[i++], "steps");
   r.rhs_calls = parse_integer(f[i++], "rhs_calls");
   r.model = model;
+  const auto shadow_fields = [&] {
+    for (std::size_t l = 0; l < shadow_count; ++l) {
+      ShadowColumns c;
+      for (double* x : {&c.F_median, &c.F_p95, &c.F_max, &c.M_median, &c.M_max, &c.dE})
+        *x = parse_number_field(f[i++], "of a shadow law");
+      const std::string& failures = f[i++];
+      c.failures = failures.empty() ? -1 : parse_integer(failures, "shadow_failures");
+      r.shadow.push_back(c);
+    }
+  };
   if (model == RunModel::puck) {
     r.puck.slip_stop_time = parse_number_field(f[i++], "slip_stop_time");
     r.puck.spin_stop_time = parse_number_field(f[i++], "spin_stop_time");
@@ -179,6 +211,7 @@ RunRecord parse_run_row(std::string_view line, std::size_t key_count, RunModel m
     r.puck.turned = parse_number_field(f[i++], "turned");
     r.work_slide = parse_number_field(f[i++], "work_slide");
     r.work_spin = parse_number_field(f[i++], "work_spin");
+    shadow_fields();
     r.message = f[i++];
     return r;
   }
@@ -200,6 +233,7 @@ RunRecord parse_run_row(std::string_view line, std::size_t key_count, RunModel m
   r.t_part = parse_number_field(f[i++], "t_part");
   for (std::size_t k = 0; k < kAxisAngleTimes.size(); ++k)
     r.axis_angle_deg.push_back(parse_number_field(f[i++], "axis_deg_at"));
+  shadow_fields();
   r.message = f[i++];
   return r;
 }

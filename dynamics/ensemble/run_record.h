@@ -33,14 +33,22 @@
 //                                      (dynamics/paper/divergence.h). Samples are interpolated
 //                                      (dynamics/ensemble/run_recorder.h): angles below ~1e-4 degree
 //                                      are that interpolation's error, not the runs'.
+//   shadow_<OUT>[LAW] ...              per shadow law LAW of the study (EnsemblePlan::shadow_laws),
+//                                      on the reference law's runs (empty on the others): that
+//                                      law's error evaluated at the contact of every state of the
+//                                      run (dynamics/core/shadow_laws.h, every contact state,
+//                                      weighted by time): F_median, F_p95, F_max of |dF| per kN
+//                                      (k·N, the friction bound), M_median, M_max of |dM| per kNa,
+//                                      dE (J: what LAW would dissipate along the run minus what the
+//                                      run dissipated) and failures (states where LAW failed)
 //   message                            why a run stopped early or failed (one line)
 //
 // A puck study (dynamics/ensemble/run_model.h) has the puck's columns instead of the body's
 // features: after rhs_calls, slip_stop_time, spin_stop_time (s; empty: never), terminal_ratio
 // (U/(a|Omega|) at the first stop), terminal_ratio_limit (extrapolated; empty: none), path_along,
 // path_lateral (m: the end's offset from the start along and across the initial velocity),
-// turned (rad: the heading's change), work_slide, work_spin (J), message — the quantities of the
-// puck's summary.json (dynamics/puck/puck_summary_json.h); no divergence columns.
+// turned (rad: the heading's change), work_slide, work_spin (J), the shadow columns, message — the
+// quantities of the puck's summary.json (dynamics/puck/puck_summary_json.h); no divergence columns.
 //
 // Numbers: shortest round-trip text; missing: empty.
 
@@ -70,6 +78,21 @@ struct PuckFeatures {
   double path_lateral = kNaN;          ///< m, to its left
   double turned = kNaN;                ///< rad, the heading's change
 };
+
+/// One shadow law's errors along a run (the shadow columns; NaN, failures -1: not evaluated).
+struct ShadowColumns {
+  double F_median = kNaN;  ///< |dF| per kN: median over the run's contact states, by time
+  double F_p95 = kNaN;     ///< its 95th percentile
+  double F_max = kNaN;     ///< its largest
+  double M_median = kNaN;  ///< |dM| per kNa
+  double M_max = kNaN;
+  double dE = kNaN;        ///< J: the law's dissipation along the run minus the run's
+  long failures = -1;      ///< states where the law failed
+  [[nodiscard]] bool evaluated() const { return failures >= 0; }
+};
+
+/// The names of the shadow columns, in order, without the law ("F_median", ...).
+[[nodiscard]] const std::array<const char*, 7>& shadow_column_names();
 
 struct RunRecord {
   RunModel model = RunModel::body;  ///< which columns the row has
@@ -101,6 +124,7 @@ struct RunRecord {
   double diverge_horizon = kNaN;
   double t_part = kNaN;                ///< s: first time the symmetry axes are 1 degree apart
   std::vector<double> axis_angle_deg;  ///< degrees at kAxisAngleTimes (empty or NaN: not compared)
+  std::vector<ShadowColumns> shadow;   ///< per shadow law of the study, in its order (every row)
   std::string message;
   PuckFeatures puck;  ///< a puck run's (model == puck); work_slide, work_spin above
 
@@ -126,16 +150,19 @@ struct RunRecord {
 /// "rest".
 [[nodiscard]] std::string puck_outcome_class(std::string_view reason, double terminal_ratio);
 
-/// The columns of runs.csv for the study's varied `keys` and model.
+/// The columns of runs.csv for the study's varied `keys`, model and shadow laws.
 [[nodiscard]] std::vector<std::string> run_columns(const std::vector<std::string>& keys,
-                                                   RunModel model = RunModel::body);
+                                                   RunModel model = RunModel::body,
+                                                   const std::vector<std::string>& shadow_laws = {});
 /// The header line (with its line ending).
-[[nodiscard]] std::string runs_header(const std::vector<std::string>& keys, RunModel model = RunModel::body);
-/// One row (with its line ending), with the columns of r.model.
+[[nodiscard]] std::string runs_header(const std::vector<std::string>& keys, RunModel model = RunModel::body,
+                                      const std::vector<std::string>& shadow_laws = {});
+/// One row (with its line ending), with the columns of r.model and r.shadow.size() shadow laws.
 [[nodiscard]] std::string to_csv_row(const RunRecord& r);
 /// A row read back (without its line ending); a wrong number of fields or a bad number is
 /// std::invalid_argument.
-[[nodiscard]] RunRecord parse_run_row(std::string_view line, std::size_t key_count, RunModel model = RunModel::body);
+[[nodiscard]] RunRecord parse_run_row(std::string_view line, std::size_t key_count, RunModel model = RunModel::body,
+                                      std::size_t shadow_count = 0);
 /// The run index of a row (its first field), without parsing the rest; -1 if it has none.
 [[nodiscard]] long run_index_of_row(std::string_view line);
 

@@ -200,6 +200,22 @@ Study build(const toml::table& root, const std::filesystem::path& source, const 
     if (s.set[i].find('=') == std::string::npos || s.set[i].front() == '=')
       throw invalid_value("set[" + std::to_string(i) + "]", std::string_view(s.set[i]),
                           "an override has the form key=value (e.g. run.output_dt=0.01)");
+  if (top.has("shadow")) {
+    const toml::node& n = top.node("shadow");
+    if (n.is_boolean()) {
+      s.shadow_compared = *n.value<bool>();
+    } else if (n.is_array()) {
+      s.shadow_compared = false;
+      s.shadow_laws = top.strings("shadow");
+      for (std::size_t i = 0; i < s.shadow_laws.size(); ++i)
+        for (std::size_t j = 0; j < i; ++j)
+          if (s.shadow_laws[i] == s.shadow_laws[j])
+            throw invalid_value("shadow[" + std::to_string(i) + "]", std::string_view(s.shadow_laws[i]),
+                                "it repeats shadow[" + std::to_string(j) + "]");
+    } else {
+      wrong_type("shadow", n, "true, false or an array of friction-law specs");
+    }
+  }
   const long long seed = top.integer("seed", 1);
   if (seed < 0) throw invalid_value("seed", seed, "it must be >= 0");
   s.seed = static_cast<std::uint64_t>(seed);
@@ -255,7 +271,7 @@ Study build(const toml::table& root, const std::filesystem::path& source, const 
   if (!(s.trajectory_dt > 0.0)) throw invalid_value("output.trajectory_dt", s.trajectory_dt, "it must be > 0 s");
   output.check_no_unknown_keys({"trajectory_dt"});
 
-  top.check_no_unknown_keys({"name", "description", "scenario", "laws", "set", "seed", "[design]", "[[vary]]",
+  top.check_no_unknown_keys({"name", "description", "scenario", "laws", "set", "shadow", "seed", "[design]", "[[vary]]",
                              "[replicas]", "[output]"});
   return s;
 }

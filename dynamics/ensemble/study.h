@@ -9,6 +9,11 @@
 //   laws = ["exact", "pade-reconstructed"]        # the first is the reference; LAW@PATCH runs the
 //                                                 # law under contact.patch = PATCH (variant.h)
 //   set = ["run.output_dt=0.01"]                  # overrides of every run (the --set syntax)
+//   shadow = true                                 # the reference's runs evaluate the compared laws
+//                                                 # along their motion (dynamics/core/shadow_laws.h):
+//                                                 # true (default) the other laws under the
+//                                                 # reference's contact model, false none, or a
+//                                                 # list of law specs
 //   seed = 1
 //   [design]
 //   type = "grid"                                 # grid | random | sobol | lhs
@@ -64,6 +69,10 @@ struct Study {
   std::filesystem::path scenario;    ///< the base scenario (resolved against the study's folder)
   std::vector<std::string> laws;     ///< LAW or LAW@PATCH (variant.h); laws[0] is the reference
   std::vector<std::string> set;      ///< "key=value" overrides of every run
+  /// `shadow`: true (the compared laws; the plan resolves them) unless the file says false or
+  /// lists laws (then shadow_laws holds them, possibly empty).
+  bool shadow_compared = true;
+  std::vector<std::string> shadow_laws;  ///< law specs listed by `shadow = [...]`
   std::uint64_t seed = 1;
   DesignKind design = DesignKind::grid;
   long points = 0;                   ///< random, sobol, lhs: the number of starts

@@ -4,9 +4,14 @@
 #include <array>
 #include <chrono>
 #include <exception>
+#include <memory>
 #include <numbers>
+#include <optional>
 
+#include "dynamics/core/shadow_laws.h"
+#include "dynamics/core/shadow_observer.h"
 #include "dynamics/ensemble/run_recorder.h"
+#include "dynamics/io/run_folder.h"
 #include "dynamics/body/equations_of_motion.h"
 #include "dynamics/paper/divergence.h"
 #include "dynamics/paper/experiment_report.h"
@@ -39,6 +44,45 @@ struct RunOutput {
   bool interrupted = false;
 };
 
+// The reference law's runs carry the study's shadow laws (EnsemblePlan::shadow_laws): made per
+// run, their statistics only (no file), beside the run's own observer.
+class ShadowRecord {
+ public:
+  ShadowRecord(const EnsemblePlan& plan, const RunId& id, const friction::FrictionLaw& own, const MotionPhaseRule& rule) {
+    if (id.law != 0 || plan.shadow_laws().empty()) return;
+    std::vector<const friction::FrictionLaw*> laws;
+    for (const std::string& spec : plan.shadow_laws()) {
+      owned_.push_back(friction::make_law(spec));
+      laws.push_back(owned_.back().get());
+    }
+    laws_.emplace(own, std::move(laws), rule);
+  }
+  [[nodiscard]] ShadowLaws* laws() { return laws_ ? &*laws_ : nullptr; }
+
+  /// The shadow columns of `r` from the statistics (every contact state).
+  void fill(RunRecord& r) const {
+    if (!laws_) return;
+    constexpr int kF = 2;  // shadow_output_names(): F1, F2, F, M, P
+    constexpr int kM = 3;
+    for (std::size_t i = 0; i < laws_->size() && i < r.shadow.size(); ++i) {
+      const ShadowLawStatistics& st = laws_->statistics(i);
+      const auto& all = st.errors[kMotionPhases];
+      ShadowColumns& c = r.shadow[i];
+      c.F_median = all[kF].quantile(0.5);
+      c.F_p95 = all[kF].quantile(0.95);
+      c.F_max = all[kF].max();
+      c.M_median = all[kM].quantile(0.5);
+      c.M_max = all[kM].max();
+      c.dE = st.difference;
+      c.failures = st.failures;
+    }
+  }
+
+ private:
+  std::vector<std::unique_ptr<friction::FrictionLaw>> owned_;
+  std::optional<ShadowLaws> laws_;
+};
+
 // A run of the puck model: its summary's features (the quantities of its summary.json,
 // dynamics/puck/puck_summary_json.h). No samples are kept: the puck's features come from the
 // summary, and a puck study has no divergence times (its runs are compared by their features).
@@ -49,7 +93,11 @@ void run_puck(const EnsemblePlan& plan, const RunId& id, const ExecuteOptions& o
   const puck::PuckOnPlane sys(s.puck, s.k, s.g, *law);
   RunOptions run = s.run;
   run.cancel = options.cancel;
-  const puck::PuckRunSummary sum = puck::simulate_puck(sys, puck::initial_state(s), run);
+  ShadowRecord shadow(plan, id, *law, puck::motion_phase_rule(sys, run));
+  std::optional<ShadowObserver<puck::PuckOnPlane>> observer;
+  if (shadow.laws()) observer.emplace(sys, *shadow.laws(), nullptr);
+  const puck::PuckRunSummary sum =
+      puck::simulate_puck(sys, puck::initial_state(s), run, observer ? &*observer : nullptr);
   if (sum.reason == Termination::interrupted) {
     out.interrupted = true;
     return;
@@ -70,6 +118,7 @@ void run_puck(const EnsemblePlan& plan, const RunId& id, const ExecuteOptions& o
   r.work_slide = puck::slide_work(x);
   r.work_spin = puck::spin_work(x);
   r.final_class = puck_outcome_class(r.reason, r.puck.terminal_ratio);
+  shadow.fill(r);
   if (sum.reason != Termination::t_end && sum.reason != Termination::rest) r.message = sum.message;
 }
 
@@ -83,6 +132,7 @@ RunOutput run_one(const EnsemblePlan& plan, const RunId& id, const ExecuteOption
   r.replica = id.replica;
   r.law = plan.study().laws.at(static_cast<std::size_t>(id.law));
   r.values = plan.start_values(id.start);
+  r.shadow.assign(plan.shadow_laws().size(), ShadowColumns{});
   if (plan.model() == RunModel::puck) {
     try {
       run_puck(plan, id, options, out);
@@ -111,7 +161,12 @@ RunOutput run_one(const EnsemblePlan& plan, const RunId& id, const ExecuteOption
     series.in_contact.reserve(reserve);
     RunOptions run = s.run;
     run.cancel = options.cancel;
-    const RunSummary sum = simulate(sys, initial_state(s), run, &recorder);
+    ShadowRecord shadow(plan, id, *law, motion_phase_rule(sys, run));
+    std::optional<ShadowObserver<BodyOnPlane>> shadow_observer;
+    if (shadow.laws()) shadow_observer.emplace(sys, *shadow.laws(), nullptr);
+    // The recorder first: the tee samples as it asks (interpolated, run_recorder.h).
+    TeeObserver<Observer, Sample> observers({&recorder, shadow_observer ? &*shadow_observer : nullptr});
+    const RunSummary sum = simulate(sys, initial_state(s), run, &observers);
     if (sum.reason == Termination::interrupted) {
       out.interrupted = true;
       return out;
@@ -136,6 +191,7 @@ RunOutput run_one(const EnsemblePlan& plan, const RunId& id, const ExecuteOption
     r.spin_reversals = reversals.count;
     r.t_first_reversal = reversals.t_first;
     r.final_spin_sense = reversals.final_sense;
+    shadow.fill(r);
     if (sum.reason != Termination::t_end && sum.reason != Termination::rest && sum.reason != Termination::rolling)
       r.message = sum.message;
     out.series.ran = true;

@@ -2,7 +2,8 @@
 // Runs one task of an ensemble (dynamics/ensemble/ensemble_plan.h: a start, a pair of replicas,
 // every law) on the calling thread, and hands each finished run to `emit` as soon as it ends.
 //
-// Per replica the reference law runs first; its sampled gamma3(t) stays in memory until the task
+// Per replica the reference law runs first, carrying the study's shadow laws (statistics only,
+// EnsemblePlan::shadow_laws); its sampled gamma3(t) stays in memory until the task
 // ends, for the divergence times of the other laws on that replica and of the reference on the
 // pair's second replica (the chaos floor). Nothing else outlives its run: a task holds at most
 // two reference series and the run in progress (~2.5 MB each for 1000 s at output_dt = 0.01 s),

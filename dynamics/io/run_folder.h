@@ -57,6 +57,9 @@ class TeeObserver final : public Base {
   [[nodiscard]] bool wants_accepted_steps() const override {
     return std::any_of(observers_.begin(), observers_.end(), [](const Base* o) { return o->wants_accepted_steps(); });
   }
+  [[nodiscard]] SampleAccuracy sample_accuracy() const override {
+    return observers_.empty() ? SampleAccuracy::method_step : observers_.front()->sample_accuracy();
+  }
 
  private:
   std::vector<Base*> observers_;

@@ -74,6 +74,13 @@ def test_smoke_study_gives_the_command_lines_runs_csv(cli, studies, tmp_path):
     with open(result.report) as f, open(tmp_path / "cli" / "report.md") as g:
         assert f.readline() == g.readline()
     assert s["command"] == f"frictionlab ensemble {smoke} --out {tmp_path / 'py'} --threads 1"
+    # The reference's runs carry the compared law as a shadow law (docs/ensembles.md §3): its
+    # columns are numbers on the exact rows and NaN on the others.
+    exact = np.array([law == "exact" for law in result.runs["law"]])
+    for out in ("F_median", "F_p95", "F_max", "M_median", "M_max", "dE", "failures"):
+        column = result.runs[f"shadow_{out}[pade-printed]"]
+        assert np.all(np.isfinite(column[exact])) and np.all(np.isnan(column[~exact])), out
+    assert np.all(result.runs["shadow_F_median[pade-printed]"][exact] > 0)
 
 
 def read_csv_columns_or_text(path):

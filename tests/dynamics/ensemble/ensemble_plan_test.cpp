@@ -167,6 +167,22 @@ size = 1e-6
   }
 }
 
+// The shadow laws of the reference's runs: by default the law of every compared variant under the
+// reference's contact model, once each, never the reference's own; or the study's list.
+TEST(EnsemblePlan, TheShadowLawsAreTheComparedLawsUnderTheReferencesContactModel) {
+  const std::string head = "scenario = \"../scenarios/egg-printed-a.toml\"\n";
+  const auto shadow = [&](const std::string& rest) { return EnsemblePlan::make(study(head + rest)).shadow_laws(); };
+  using L = std::vector<std::string>;
+  EXPECT_EQ(shadow("laws = [\"exact\", \"pade-reconstructed\", \"moller-ellipsoidal\"]\n"),
+            (L{"pade-reconstructed", "moller-ellipsoidal"}));
+  EXPECT_EQ(shadow("laws = [\"exact@section\", \"exact@hertz\", \"ellipsoidal@hertz\", \"ellipsoidal@section\"]\n"),
+            (L{"ellipsoidal"}));
+  EXPECT_EQ(shadow("laws = [\"exact\", \"exact@hertz\", \"ellipsoidal\", \"ellipsoidal@hertz\"]\n"), (L{"ellipsoidal"}));
+  EXPECT_EQ(shadow("laws = [\"exact\"]\n"), L{});
+  EXPECT_EQ(shadow("laws = [\"exact\", \"ellipsoidal\"]\nshadow = false\n"), L{});
+  EXPECT_EQ(shadow("laws = [\"exact\"]\nshadow = [\"decoupled\", \"exact\"]\n"), (L{"decoupled", "exact"}));
+}
+
 TEST(EnsemblePlan, BadKeysLawsAndScenariosAreOneLineNamingThem) {
   const std::string head = "scenario = \"../scenarios/egg-printed-a.toml\"\n";
   const std::vector<std::pair<std::string, std::string>> cases = {
@@ -177,8 +193,9 @@ TEST(EnsemblePlan, BadKeysLawsAndScenariosAreOneLineNamingThem) {
       {head + "laws = [\"exact\"]\n[[vary]]\nkey = \"initial.omega\"\nvalues = [1]\n", "vary[0].key = 'initial.omega'"},
       {head + "laws = [\"exact\"]\nset = [\"contact.law=exact\"]\n", "set[0] = 'contact.law=exact'"},
       {head + "laws = [\"exact\"]\nset = [\"run.t_edn=1\"]\n", "run.t_edn"},
-      // Shadow laws belong to single runs: an ensemble says so rather than dropping them.
+      // A study's shadow laws are its `shadow` key, not the scenario's run.shadow for every run.
       {head + "laws = [\"exact\"]\nset = [\"run.shadow=ellipsoidal\"]\n", "run.shadow is set"},
+      {head + "laws = [\"exact\"]\nshadow = [\"pade-imagined\"]\n", "shadow[0] = 'pade-imagined'"},
       {"scenario = \"no-such.toml\"\nlaws = [\"exact\"]\n", "no-such.toml"},
   };
   for (const auto& [text, key] : cases) {

@@ -110,6 +110,24 @@ TEST(EnsemblePuck, ARunHasTheFeaturesOfThePuckRunOfTheSameScenario) {
   EXPECT_GT(std::abs(field(h, row, "path_lateral")), 1e-5);
   EXPECT_NEAR(field(h, row, "work_slide") + field(h, row, "work_spin"), j.at("initial_energy").get<double>(),
               1e-9 * j.at("initial_energy").get<double>());
+  // The compared law's run has no shadow columns; the reference's run (run 2) has them, equal to
+  // `simulate --shadow` on its scenario.
+  EXPECT_TRUE(std::isnan(field(h, row, "shadow_F_median[pade-reconstructed]")));
+  const auto ref = dynamics::ensemble::split_csv_line(rows.at(2));
+  ASSERT_EQ(ref.at(3), "exact");
+  const auto shadowed = run_frictionlab("simulate " + (kScenarios / "puck-ellipse.toml").string() + " --out " +
+                                        (dir / "r").string() +
+                                        " --set run.output_dt=0.01 --set puck.b=0.03 --set initial.v=[1,0]"
+                                        " --set contact.law=exact --shadow pade-reconstructed");
+  ASSERT_EQ(shadowed.exit_code, 0) << shadowed.err;
+  const auto law = support::Json::parse(slurp(dir / "r" / "summary.json")).at("shadow").at("laws").at(0);
+  const auto& errors = law.at("errors").at("contact");
+  EXPECT_EQ(field(h, ref, "shadow_F_median[pade-reconstructed]"), errors.at("F").at("median").get<double>());
+  EXPECT_EQ(field(h, ref, "shadow_F_max[pade-reconstructed]"), errors.at("F").at("max").get<double>());
+  EXPECT_EQ(field(h, ref, "shadow_M_median[pade-reconstructed]"), errors.at("M").at("median").get<double>());
+  EXPECT_EQ(field(h, ref, "shadow_dE[pade-reconstructed]"), law.at("difference_J").get<double>());
+  EXPECT_EQ(field(h, ref, "shadow_failures[pade-reconstructed]"), 0.0);
+  EXPECT_GT(field(h, ref, "shadow_F_median[pade-reconstructed]"), 0.0);
   fs::remove_all(dir);
 }
 

@@ -30,7 +30,20 @@ TEST(EnsembleStudy, MinimalStudyHasOneStartOneReplicaAndDefaults) {
   EXPECT_EQ(s.replicas, 1);
   EXPECT_EQ(s.seed, 1u);
   EXPECT_EQ(s.trajectory_dt, 0.1);
+  EXPECT_TRUE(s.shadow_compared) << "the compared laws shadow the reference by default";
+  EXPECT_TRUE(s.shadow_laws.empty());
   EXPECT_EQ(s.text, kMinimal);
+}
+
+TEST(EnsembleStudy, ShadowIsTheComparedLawsNoneOrAList) {
+  const Study off = parse(std::string(kMinimal) + "shadow = false\n");
+  EXPECT_FALSE(off.shadow_compared);
+  EXPECT_TRUE(off.shadow_laws.empty());
+  const Study on = parse(std::string(kMinimal) + "shadow = true\n");
+  EXPECT_TRUE(on.shadow_compared);
+  const Study listed = parse(std::string(kMinimal) + "shadow = [\"ellipsoidal\", \"decoupled\"]\n");
+  EXPECT_FALSE(listed.shadow_compared);
+  EXPECT_EQ(listed.shadow_laws, (std::vector<std::string>{"ellipsoidal", "decoupled"}));
 }
 
 TEST(EnsembleStudy, EveryKeyIsRead) {
@@ -106,6 +119,9 @@ TEST(EnsembleStudy, BadStudiesAreOneLineNamingTheKey) {
       {"scenario = \"x.toml\"\nlaws = [\"exact\", \"exact\"]\n", "laws[1]"},
       {"scenario = \"x.toml\"\nlaws = \"exact\"\n", "laws must be an array"},
       {base + "sead = 3\n", "unknown key sead"},
+      {base + "shadow = 3\n", "shadow must be true, false or an array"},
+      {base + "shadow = [\"ellipsoidal\", \"ellipsoidal\"]\n", "shadow[1] = 'ellipsoidal'"},
+      {base + "shadow = [1]\n", "shadow[0] must be a string"},
       {base + "seed = -1\n", "seed = -1"},
       {base + "seed = 1.5\n", "seed must be an integer"},
       {base + "set = [\"run.t_end\"]\n", "set[0]"},

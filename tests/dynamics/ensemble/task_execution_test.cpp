@@ -6,8 +6,14 @@
 
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
 #include <cmath>
+#include <fstream>
 #include <map>
+
+#include "dynamics/body/scenario_run.h"
+#include "friction/support/json.h"
 
 namespace frictionlab::dynamics::ensemble {
 namespace {
@@ -15,10 +21,12 @@ namespace {
 const std::filesystem::path kStudies = std::filesystem::path(FRICTIONLAB_SOURCE_DIR) / "data" / "studies";
 
 // Case a of the printed egg for 0.5 s: the printed Padé law stops at its pole at 0.316 s.
-EnsemblePlan plan() {
+// `shadow`: a line of the study (the shadow key), or none (the default: the compared laws).
+EnsemblePlan plan(const std::string& shadow = "") {
   return EnsemblePlan::make(parse_study(R"(scenario = "../scenarios/egg-printed-a.toml"
 laws = ["exact", "pade-printed", "moller-ellipsoidal"]
 set = ["run.t_end=0.5", "run.output_dt=0.01"]
+)" + shadow + R"(
 [replicas]
 count = 2
 size = 1e-9
@@ -113,6 +121,76 @@ size = 1e-6
   ASSERT_EQ(floor.axis_angle_deg.size(), kAxisAngleTimes.size());
   for (std::size_t k = 0; k < 4; ++k) EXPECT_GT(floor.axis_angle_deg[k], 0.0) << kAxisAngleTimes[k];
   EXPECT_GT(floor.axis_angle_deg[3], 10.0 * floor.axis_angle_deg[0]) << "3 s against 0.1 s";
+}
+
+// The reference's runs carry the compared laws as shadow laws (dynamics/core/shadow_laws.h): the
+// columns are filled on them only, and the runs are the same bit for bit as without.
+TEST(EnsembleTaskExecution, TheReferencesRunsShadowTheComparedLawsWithoutChangingAnything) {
+  const EnsemblePlan with = plan();
+  const EnsemblePlan without = plan("shadow = false");
+  ASSERT_EQ(with.shadow_laws(), (std::vector<std::string>{"pade-printed", "moller-ellipsoidal"}));
+  ASSERT_TRUE(without.shadow_laws().empty());
+  const auto a = run_task(with, whole(with));
+  const auto b = run_task(without, whole(without));
+  ASSERT_EQ(a.size(), b.size());
+  for (const auto& [run, r] : a) {
+    ASSERT_EQ(r.shadow.size(), 2u) << run;
+    RunRecord plain = r;
+    RunRecord other = b.at(run);
+    plain.shadow.clear();
+    plain.wall_time = other.wall_time = 0.0;
+    EXPECT_EQ(to_csv_row(plain), to_csv_row(other)) << "the shadow laws changed run " << run;
+    for (const ShadowColumns& c : r.shadow) EXPECT_EQ(c.evaluated(), r.law == "exact") << run;
+  }
+  for (const long run : {0L, 3L}) {  // the reference's runs
+    const ShadowColumns& moller = a.at(run).shadow[1];
+    EXPECT_EQ(moller.failures, 0);
+    EXPECT_GT(moller.F_median, 0.0);
+    EXPECT_LE(moller.F_median, moller.F_p95);
+    EXPECT_LE(moller.F_p95, moller.F_max * 1.023) << "quantiles within 2.3 %";
+    EXPECT_LE(moller.F_max, 2.0) << "two laws within the friction bound differ by at most 2 kN";
+    EXPECT_GT(moller.M_max, 0.0);
+    EXPECT_TRUE(std::isfinite(moller.dE));
+    EXPECT_GE(a.at(run).shadow[0].failures, 0) << "pade-printed counts its poles";
+  }
+  // A row with the shadow columns reads back as it was written.
+  const std::string row = to_csv_row(a.at(0));
+  const RunRecord back = parse_run_row(std::string_view(row).substr(0, row.size() - 1), 0, RunModel::body, 2);
+  EXPECT_EQ(to_csv_row(back), row);
+}
+
+// Shadowing the reference law with itself gives zero everywhere, and a law's columns are the
+// statistics that `frictionlab simulate --shadow` writes for the same start (another path through
+// the same statistics: summary.json).
+TEST(EnsembleTaskExecution, TheShadowColumnsAreZeroForTheOwnLawAndTheSimulateShadowStatistics) {
+  const EnsemblePlan p = plan(R"(shadow = ["exact", "moller-ellipsoidal"])");
+  TaskOrder first;
+  first.task = p.task(0);
+  first.todo = {0};
+  const auto rows = run_task(p, first);
+  ASSERT_EQ(rows.size(), 1u);
+  const ShadowColumns& self = rows.at(0).shadow.at(0);
+  EXPECT_EQ(self.F_max, 0.0);
+  EXPECT_EQ(self.M_max, 0.0);
+  EXPECT_EQ(self.dE, 0.0);
+  EXPECT_EQ(self.failures, 0);
+
+  Scenario s = p.scenario({0, 0, 0});
+  s.run.shadow = {"moller-ellipsoidal"};
+  const auto dir = std::filesystem::temp_directory_path() / ("frictionlab_ens_shadow_" + std::to_string(::getpid()));
+  std::filesystem::remove_all(dir);
+  const ScenarioRun run = run_scenario(s, dir);
+  std::ifstream in(run.summary_json);
+  const auto summary = support::Json::parse(in);
+  const auto& law = summary["shadow"]["laws"][0];
+  const auto& F = law["errors"]["contact"]["F"];
+  const ShadowColumns& m = rows.at(0).shadow.at(1);
+  EXPECT_EQ(F["median"].get<double>(), m.F_median);
+  EXPECT_EQ(F["p95"].get<double>(), m.F_p95);
+  EXPECT_EQ(F["max"].get<double>(), m.F_max);
+  EXPECT_EQ(law["errors"]["contact"]["M"]["max"].get<double>(), m.M_max);
+  EXPECT_EQ(law["difference_J"].get<double>(), m.dE);
+  std::filesystem::remove_all(dir);
 }
 
 TEST(EnsembleTaskExecution, AResumedTaskRecomputesItsReferenceAndGivesTheSameRows) {
