@@ -1487,11 +1487,14 @@ FrictionForces ExactLaw::do_evaluate(const ContactInput& in) const {
       r = uniform_inside(mu, p, q);
     } else {
       bool done = false;
-      const bool window = mu >= kSlenderAxisRatio && rho2 > 1.0;
-      if (window) r = uniform_window(mu, p, q, std::sqrt(rho2), s, done);
+      // rho itself above 1: rho^2 up to one ulp above 1 has sqrt 1, the ICR on the rim, where the
+      // window's branch points reach its ends (NaN); the rim integrals take it.
+      const double rho = std::sqrt(rho2);
+      const bool window = mu >= kSlenderAxisRatio && rho > 1.0;
+      if (window) r = uniform_window(mu, p, q, rho, s, done);
       if (!done) {
         if (window) {
-          r = uniform_window_graded(mu, p, q, std::sqrt(rho2), s);
+          r = uniform_window_graded(mu, p, q, rho, s);
         } else if (mu < kRimFoldedMaxAxisRatio) {
           r = uniform_rim_folded(mu, p, s * cpsi);
         } else {

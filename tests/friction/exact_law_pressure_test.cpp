@@ -303,5 +303,44 @@ TEST(ExactPressure, FiniteOnSlenderPatchesAtEverySlipRatio) {
   }
 }
 
+// The ICR on the rim to the last bit: slip speeds within a few ulps of the one that puts the ICR
+// on the rim (rho^2 = s^2 (sin^2 psi + cos^2 psi/mu^2) = 1), where the routes inside and outside
+// meet and sqrt(rho^2) may round to 1 with rho^2 > 1 (the uniform pressure's graded window had a
+// branch point on its end there and returned NaN: U = 0.24651415936864718, b/a = 0.1, psi =
+// 1.164600151803648). Every output finite, and the neighbours within the law's accuracy of each
+// other (the law is continuous there).
+TEST(ExactPressure, AnIcrOnTheRimToTheLastBitIsFiniteAndContinuous) {
+  for (const Pressure pressure : kAll) {
+    const ExactLaw law(pressure);
+    const double tol = pressure == Pressure::hertz ? kExactLawAccuracy : kTol;
+    for (const double mu : {1.0, 0.5, 0.1, 0.03, 0.01, 1e-3, 1e-5}) {
+      for (int j = 0; j <= 36; ++j) {
+        const double psi = kPi * j / 36.0;
+        const double k = std::sqrt(std::pow(std::sin(psi), 2) + std::pow(std::cos(psi) / mu, 2));
+        double U = 1.0 / k;
+        for (int n = 0; n < 6; ++n) U = std::nextafter(U, 0.0);
+        FrictionForces first{};
+        for (int n = 0; n < 12; ++n, U = std::nextafter(U, 1.0)) {
+          ContactInput in;
+          in.U = U;
+          in.Omega = 1.0;
+          in.a = 1.0;
+          in.b = mu;
+          in.psi = PatchAngle(psi);
+          in.N = 1.0;
+          in.k = 1.0;
+          const FrictionForces f = law.evaluate(in);
+          ASSERT_TRUE(std::isfinite(f.F1) && std::isfinite(f.F2) && std::isfinite(f.M))
+              << pressure_name(pressure) << " mu " << mu << " psi " << psi << " U " << U;
+          if (n == 0) first = f;
+          EXPECT_NEAR(f.F1, first.F1, tol) << pressure_name(pressure) << " mu " << mu << " psi " << psi;
+          EXPECT_NEAR(f.F2, first.F2, tol) << pressure_name(pressure) << " mu " << mu << " psi " << psi;
+          EXPECT_NEAR(f.M, first.M, tol) << pressure_name(pressure) << " mu " << mu << " psi " << psi;
+        }
+      }
+    }
+  }
+}
+
 }  // namespace
 }  // namespace frictionlab::friction
