@@ -35,6 +35,7 @@
 #include "bench/allocation_counter.h"
 #include "bench/law_input_set.h"
 #include "friction/registry.h"
+#include "friction/reference_laws.h"
 
 namespace frictionlab::bench {
 namespace {
@@ -128,6 +129,7 @@ void register_law(const friction::LawInfo& info, const std::vector<friction::Con
 }  // namespace frictionlab::bench
 
 int main(int argc, char** argv) {
+  frictionlab::friction::register_reference_laws();  // exact-reference (GSL) is timed too
   const auto set = frictionlab::bench::law_input_set();
   // Every law, and every variant of its choice parameters (e.g. each pressure model of `exact`).
   for (const auto& spec : frictionlab::friction::list_law_specs()) {

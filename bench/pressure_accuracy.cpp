@@ -18,10 +18,12 @@
 
 #include "friction/registry.h"
 #include "friction/support/number_format.h"
+#include "friction/reference_laws.h"
 
 int main(int argc, char** argv) {
   namespace fl = frictionlab::friction;
   namespace sup = frictionlab::support;
+  fl::register_reference_laws();
   const int n = argc > 1 ? std::atoi(argv[1]) : 200;
   const unsigned seed = argc > 2 ? static_cast<unsigned>(std::atoi(argv[2])) : 1u;
   const double pi = std::numbers::pi;

@@ -1,4 +1,5 @@
 #include "friction/registry.h"
+#include "friction/registry_extension.h"
 
 #include <algorithm>
 #include <mutex>
@@ -9,7 +10,6 @@
 #include "friction/decoupled_law.h"
 #include "friction/ellipsoidal_law.h"
 #include "friction/exact_law.h"
-#include "friction/exact_reference_law.h"
 #include "friction/mujoco_elliptic_law.h"
 #include "friction/pade_printed_law.h"
 #include "friction/pade_reconstructed_law.h"
@@ -71,10 +71,8 @@ class Registry {
     add(built_in([](const LawArguments& a) { return std::make_unique<ExactLaw>(parse_pressure(a.choice("pressure"))); },
                  ExactLaw::parameters(),
                  /*reference=*/true));
-    add(built_in([](const LawArguments& a) {
-          return std::make_unique<ExactReferenceLaw>(parse_pressure(a.choice("pressure")));
-        },
-                 ExactReferenceLaw::parameters(), false, /*slow=*/true));
+    // exact-reference, the GSL cross-check, is registered by its own library
+    // (friction/reference_laws.h), so that the laws link no GPL code.
     add(built_in([](const LawArguments&) { return std::make_unique<PadePrintedLaw>(PadeAlpha::major); }));
     add(built_in([](const LawArguments&) { return std::make_unique<PadePrintedLaw>(PadeAlpha::minor); }));
     add(built_in(plain<PadeReconstructedLaw>()));
@@ -326,6 +324,10 @@ void register_law(LawRegistration registration) {
     throw std::invalid_argument(std::string(err.what()) + ": it cannot be registered");
   }
   registry().add(std::move(e));
+}
+
+void register_built_in_law(LawFactory factory, std::vector<LawParameter> parameters, LawFacts facts) {
+  registry().add(built_in(std::move(factory), std::move(parameters), /*reference=*/false, facts.slow));
 }
 
 void register_law(std::string name, std::string summary, std::function<std::unique_ptr<FrictionLaw>()> factory) {

@@ -17,6 +17,7 @@
 #include "dynamics/cli/option_values.h"
 #include "friction/support/checked_output.h"
 #include "friction/support/errors.h"
+#include "friction/reference_laws.h"
 
 namespace {
 
@@ -96,6 +97,7 @@ int main(int argc, char** argv) {
   CLI::App app{"frictionlab: exact vs approximate coupled dry friction (sliding + spinning)\n"
                "over an elliptic Hertz contact patch, at a point and along a motion."};
   app.require_subcommand(1);
+  frictionlab::friction::register_reference_laws();  // exact-reference (GSL), in the command
   app.set_version_flag("--version", std::string("frictionlab ") + FRICTIONLAB_VERSION,
                        "Print `frictionlab VERSION` and exit");
   frictionlab::cli::register_laws_command(app);

@@ -5,10 +5,12 @@
 
 #include "bindings.h"
 #include "friction/support/checked_output.h"
+#include "friction/reference_laws.h"
 
 PYBIND11_MODULE(_core, m) {
   namespace py = pybind11;
   m.doc() = "frictionlab's compiled core; use the package frictionlab (docs/python.md).";
+  frictionlab::friction::register_reference_laws();  // exact-reference (GSL), as in the command
   // A file that cannot be written is an OSError in Python, as a failed open() would be.
   // Exported as frictionlab.OutputError (python/frictionlab/__init__.py), and named so.
   auto output_error = py::register_exception<frictionlab::support::OutputError>(m, "OutputError", PyExc_OSError);

@@ -19,9 +19,13 @@
 #include "bench/accuracy/plots.h"
 #include "bench/accuracy/report.h"
 #include "friction/registry.h"
+#include "friction/reference_laws.h"
 
 namespace frictionlab::accuracy {
 namespace {
+
+// exact-reference (GSL) lives in its own library: registered here, as the command does.
+[[maybe_unused]] const bool kReferenceLawsRegistered = (friction::register_reference_laws(), true);
 
 constexpr double pi = std::numbers::pi;
 

@@ -19,9 +19,13 @@
 #include "friction/batch.h"
 #include "friction/registry.h"
 #include "tests/cli/cli_runner.h"
+#include "friction/reference_laws.h"
 
 namespace frictionlab::testing {
 namespace {
+
+// The command registers exact-reference (GSL); so does this process, to compare its listing.
+[[maybe_unused]] const bool kReferenceLawsRegistered = (frictionlab::friction::register_reference_laws(), true);
 
 std::size_t count_lines(const std::string& s) {
   return static_cast<std::size_t>(std::count(s.begin(), s.end(), '\n'));

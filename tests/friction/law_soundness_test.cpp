@@ -24,9 +24,13 @@
 #include "friction/law.h"
 #include "friction/registry.h"
 #include "tests/friction/hertz_closed_forms.h"
+#include "friction/reference_laws.h"
 
 namespace frictionlab::friction {
 namespace {
+
+// exact-reference (GSL) lives in its own library: registered here, as the command does.
+[[maybe_unused]] const bool kReferenceLawsRegistered = (friction::register_reference_laws(), true);
 
 constexpr double kPi = std::numbers::pi;
 

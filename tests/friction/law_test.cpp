@@ -10,9 +10,13 @@
 #include <string>
 
 #include "friction/registry.h"
+#include "friction/reference_laws.h"
 
 namespace frictionlab::friction {
 namespace {
+
+// exact-reference (GSL) lives in its own library: registered here, as the command does.
+[[maybe_unused]] const bool kReferenceLawsRegistered = (friction::register_reference_laws(), true);
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kInf = std::numeric_limits<double>::infinity();

@@ -19,6 +19,8 @@
 #include <utility>
 #include <vector>
 
+#include "friction/reference_laws.h"
+
 namespace frictionlab::friction {
 namespace {
 
@@ -72,6 +74,21 @@ struct Registered {
 bool listed(const std::string& name) {
   const auto laws = list_laws();
   return std::any_of(laws.begin(), laws.end(), [&](const LawInfo& i) { return i.name == name; });
+}
+
+// exact-reference needs GSL (GPL-3): frictionlab::friction does not register it; its own library
+// does, once, as a built-in law (the first test of this file: nothing registered it before).
+TEST(RegistryReference, TheGslReferenceLawComesWithItsOwnLibrary) {
+  EXPECT_THROW((void)make_law("exact-reference"), std::invalid_argument);
+  const std::size_t before = list_laws().size();
+  register_reference_laws();
+  register_reference_laws();  // a second call does nothing
+  EXPECT_EQ(list_laws().size(), before + 1);
+  const LawInfo info = law_info("exact-reference:pressure=uniform");
+  EXPECT_TRUE(info.slow);
+  EXPECT_FALSE(info.reference);
+  EXPECT_EQ(make_law("exact-reference")->name(), "exact-reference");
+  EXPECT_THROW((void)unregister_law("exact-reference"), std::invalid_argument) << "built in";
 }
 
 TEST(RegistrySpec, ALawKnowsTheSpecItWasMadeFromVerbatim) {
