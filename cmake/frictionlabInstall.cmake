@@ -67,6 +67,8 @@ function(frictionlab_prepare_export target)
   get_target_property(links ${target} INTERFACE_LINK_LIBRARIES)
   if(links)
     list(FILTER links EXCLUDE REGEX "^\\$<LINK_ONLY:(frictionlab::warnings|frictionlab_warnings)>$")
+    # A build-only link (header-only Boost of the laws) would be exported as an empty $<LINK_ONLY:>.
+    list(FILTER links EXCLUDE REGEX "^\\$<LINK_ONLY:\\$<BUILD_INTERFACE:[^>]*>>$")
     set_target_properties(${target} PROPERTIES INTERFACE_LINK_LIBRARIES "${links}")
   endif()
 endfunction()
@@ -78,7 +80,25 @@ foreach(t IN LISTS FRICTIONLAB_INSTALLED_LIBRARIES)
   frictionlab_prepare_export(${t})
 endforeach()
 
-install(TARGETS ${FRICTIONLAB_INSTALLED_LIBRARIES} frictionlab
+# Two export sets: the laws (component `friction`, the libraries marked FRICTIONLAB_COMPONENT
+# friction in friction/CMakeLists.txt: they need no other package) and the rest (component
+# `dynamics`: the simulations, their I/O, exact-reference, the command; Eigen, GSL, Boost, toml++,
+# nlohmann-json).
+set(law_libraries)
+set(other_libraries)
+foreach(t IN LISTS FRICTIONLAB_INSTALLED_LIBRARIES)
+  get_target_property(component ${t} FRICTIONLAB_COMPONENT)
+  if(component STREQUAL "friction")
+    list(APPEND law_libraries ${t})
+  else()
+    list(APPEND other_libraries ${t})
+  endif()
+endforeach()
+install(TARGETS ${law_libraries}
+        EXPORT frictionlabFrictionTargets
+        ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
+        LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
+install(TARGETS ${other_libraries} frictionlab
         EXPORT frictionlabTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
         LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
@@ -97,6 +117,7 @@ install(DIRECTORY ${PROJECT_SOURCE_DIR}/data/ DESTINATION ${FRICTIONLAB_INSTALL_
 install(FILES ${PROJECT_SOURCE_DIR}/LICENSE DESTINATION ${CMAKE_INSTALL_DOCDIR})
 
 # The package: targets, config, version. 0.y.z: a new minor version may break the interface.
+install(EXPORT frictionlabFrictionTargets NAMESPACE frictionlab:: DESTINATION ${FRICTIONLAB_INSTALL_CMAKEDIR})
 install(EXPORT frictionlabTargets NAMESPACE frictionlab:: DESTINATION ${FRICTIONLAB_INSTALL_CMAKEDIR})
 write_basic_package_version_file(${PROJECT_BINARY_DIR}/frictionlabConfigVersion.cmake
                                  COMPATIBILITY SameMinorVersion)
@@ -111,6 +132,7 @@ install(FILES ${PROJECT_BINARY_DIR}/package/frictionlabConfig.cmake
         DESTINATION ${FRICTIONLAB_INSTALL_CMAKEDIR})
 
 # The build tree as a package: the same files in ${PROJECT_BINARY_DIR}, data from the source tree.
+export(EXPORT frictionlabFrictionTargets NAMESPACE frictionlab:: FILE ${PROJECT_BINARY_DIR}/frictionlabFrictionTargets.cmake)
 export(EXPORT frictionlabTargets NAMESPACE frictionlab:: FILE ${PROJECT_BINARY_DIR}/frictionlabTargets.cmake)
 set(frictionlab_config_data_dir ${PROJECT_SOURCE_DIR}/data)
 configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/frictionlabConfig.cmake.in

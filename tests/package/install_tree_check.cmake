@@ -1,5 +1,5 @@
 # The install tree as a user meets it (tests/package/CMakeLists.txt registers the steps with ctest).
-#   cmake -DSTEP=install|consumer|build-tree|command|python|options-off|subproject -DFRICTIONLAB_SOURCE_DIR=... -DFRICTIONLAB_BUILD_DIR=... \
+#   cmake -DSTEP=install|consumer|laws-alone|build-tree|command|python|options-off|subproject -DFRICTIONLAB_SOURCE_DIR=... -DFRICTIONLAB_BUILD_DIR=... \
 #         -DWORK_DIR=... -DCONSUMER_SOURCE_DIR=... -DCXX_COMPILER=... [-DCXX_COMPILER_LAUNCHER=...] \
 #         [-DBUILD_TYPE=...] [-DCONSUMER_FLAGS=...] [-DPYTHON=... -DPYTHON_DIR=...] -P install_tree_check.cmake
 # install:  a fresh `cmake --install` into WORK_DIR/prefix; the files a user needs are there, and
@@ -52,7 +52,7 @@ if(STEP STREQUAL "install")
       message(FATAL_ERROR "not installed: ${prefix}/${f}")
     endif()
   endforeach()
-  foreach(f frictionlabConfigVersion.cmake frictionlabTargets.cmake frictionlabDependencies.cmake)
+  foreach(f frictionlabConfigVersion.cmake frictionlabTargets.cmake frictionlabFrictionTargets.cmake frictionlabDependencies.cmake)
     if(NOT EXISTS ${config_dir}/${f})
       message(FATAL_ERROR "not installed: ${config_dir}/${f}")
     endif()
@@ -99,6 +99,38 @@ elseif(STEP STREQUAL "consumer")
   run("building the consumer" ${CMAKE_COMMAND} --build ${build})
   run("running the consumer" ${build}/frictionlab_consumer)
   message(STATUS "${run_output}")
+
+elseif(STEP STREQUAL "laws-alone")
+  # The laws alone: COMPONENTS friction with every package the rest of frictionlab needs made
+  # unfindable (the config must not ask for them), built and run, and no GSL (GPL-3) in what the
+  # program loads.
+  set(build ${WORK_DIR}/laws-consumer-build)
+  file(REMOVE_RECURSE ${build})
+  set(configure ${CMAKE_COMMAND} -S ${FRICTIONLAB_SOURCE_DIR}/tests/consumer_friction -B ${build}
+                -DCMAKE_PREFIX_PATH=${prefix} -DCMAKE_CXX_COMPILER=${CXX_COMPILER} "-DCMAKE_CXX_FLAGS=${CONSUMER_FLAGS}")
+  foreach(p GSL Boost Eigen3 tomlplusplus nlohmann_json Threads)
+    list(APPEND configure -DCMAKE_DISABLE_FIND_PACKAGE_${p}=ON)
+  endforeach()
+  if(BUILD_TYPE)
+    list(APPEND configure -DCMAKE_BUILD_TYPE=${BUILD_TYPE})
+  endif()
+  if(CXX_COMPILER_LAUNCHER)
+    list(APPEND configure -DCMAKE_CXX_COMPILER_LAUNCHER=${CXX_COMPILER_LAUNCHER})
+  endif()
+  run("configuring the laws' consumer" ${configure})
+  run("building the laws' consumer" ${CMAKE_COMMAND} --build ${build} --verbose)
+  string(FIND "${run_output}" "gsl" linked_gsl)
+  if(NOT linked_gsl EQUAL -1)
+    message(FATAL_ERROR "the laws' consumer is linked with GSL:\n${run_output}")
+  endif()
+  run("running the laws' consumer" ${build}/frictionlab_laws_consumer)
+  message(STATUS "${run_output}")
+  run("ldd of the laws' consumer" ldd ${build}/frictionlab_laws_consumer)
+  string(FIND "${run_output}" "libgsl" loads_gsl)
+  if(NOT loads_gsl EQUAL -1)
+    message(FATAL_ERROR "the laws' consumer loads GSL:\n${run_output}")
+  endif()
+  message(STATUS "the laws' consumer links no GSL:\n${run_output}")
 
 elseif(STEP STREQUAL "build-tree")
   # Configure only: the consumer's code and link line are those of the installed package.
@@ -189,5 +221,5 @@ elseif(STEP STREQUAL "options-off" OR STEP STREQUAL "subproject")
   message(STATUS "${STEP}: configured without GoogleTest and Google Benchmark")
 
 else()
-  message(FATAL_ERROR "STEP=${STEP}: expected install, consumer, build-tree, command, python, options-off or subproject")
+  message(FATAL_ERROR "STEP=${STEP}: expected install, consumer, laws-alone, build-tree, command, python, options-off or subproject")
 endif()
