@@ -15,6 +15,10 @@
 // does (the command line, Python): the law forms cos psi and sin psi (friction::PatchAngle::cos_sin)
 // in each evaluation, as it always did. `BM_law_direction/<spec>` evaluates the same contacts with
 // the major axis given as its direction (cos psi, sin psi), as the dynamics hands it over.
+// `BM_law_batch/<spec>` evaluates the whole set in one call (FrictionLaw::evaluate of spans, the
+// law's own batch evaluation), the contacts the law rejects (a pole of pade-printed) left out; one
+// iteration is one batch, items_per_second counts contacts, so its time per item compares with
+// BM_law's time per evaluation.
 //
 // Counters (units in the names; kN means k times N, the friction coefficient times the normal
 // force, not kilonewtons): max_err_F1_kN, max_err_F2_kN (largest |law - exact| of F1, F2 divided by
@@ -25,9 +29,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <memory>
 #include <optional>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -115,6 +121,38 @@ void register_timing(bool from_angle, const std::string& spec, std::shared_ptr<f
   });
 }
 
+// Registers BM_law_batch/<spec>: the set, without the contacts the law rejects (found at its first
+// run, never for a law the filter leaves out), in one call per iteration.
+void register_batch_timing(const std::string& spec, std::shared_ptr<friction::FrictionLaw> law,
+                           const std::vector<friction::ContactInput>& inputs, std::shared_ptr<LazyErrors> lazy) {
+  auto set = std::make_shared<std::vector<friction::ContactInput>>();
+  auto all = std::make_shared<std::vector<friction::ContactInput>>(inputs);
+  benchmark::RegisterBenchmark(("BM_law_batch/" + spec).c_str(), [law, set, all, lazy](benchmark::State& state) {
+    if (!lazy->errors) lazy->errors = max_errors(*lazy->law, *friction::make_reference_law(), lazy->set);
+    if (set->empty()) {
+      for (const auto& in : *all) {
+        try {
+          (void)law->evaluate(in);
+          set->push_back(in);
+        } catch (const std::invalid_argument&) {
+        }
+      }
+    }
+    std::vector<friction::FrictionForces> out(set->size());
+    const long long allocations_before = g_allocations.load();
+    for (auto _ : state) {
+      law->evaluate(std::span<const friction::ContactInput>(*set), std::span<friction::FrictionForces>(out));
+      benchmark::DoNotOptimize(out.data());
+      benchmark::ClobberMemory();
+    }
+    const long long allocations = g_allocations.load() - allocations_before;
+    const auto items = static_cast<double>(state.iterations()) * static_cast<double>(set->size());
+    state.SetItemsProcessed(static_cast<std::int64_t>(items));
+    state.counters["allocs_per_eval"] = static_cast<double>(allocations) / items;
+    state.counters["inputs"] = static_cast<double>(set->size());
+  });
+}
+
 void register_law(const friction::LawInfo& info, const std::vector<friction::ContactInput>& full) {
   const bool slow = info.slow;
   const std::vector<friction::ContactInput> set(
@@ -123,6 +161,7 @@ void register_law(const friction::LawInfo& info, const std::vector<friction::Con
   auto lazy = std::make_shared<LazyErrors>(LazyErrors{law, set, std::nullopt});
   register_timing(true, info.spec, law, set, lazy);
   register_timing(false, info.spec, law, set, lazy);
+  register_batch_timing(info.spec, law, set, lazy);
 }
 
 }  // namespace

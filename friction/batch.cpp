@@ -15,6 +15,7 @@
 #include <istream>
 #include <limits>
 #include <optional>
+#include <span>
 #include <ostream>
 #include <stdexcept>
 
@@ -148,6 +149,9 @@ void check_read(const std::istream& in, const std::string& name) {
   }
 }
 
+// Rows evaluated per call of a law.
+constexpr std::size_t kChunkRows = 256;
+
 }  // namespace
 
 std::vector<std::string_view> split_csv_line(std::string_view line) {
@@ -250,6 +254,68 @@ BatchSummary evaluate_csv(const std::vector<const FrictionLaw*>& laws, std::istr
       ++summary.written;
     }
   };
+  // Rows are read into a chunk and each law evaluates the chunk in one call (the law's batch
+  // evaluation, FrictionLaw::evaluate of spans); a row the law rejects is reported and the batch
+  // goes on after it. Output keeps the input's order: a chunk is written before a row that cannot
+  // be parsed is reported.
+  struct Pending {
+    std::size_t number = 0;
+    std::string line;
+  };
+  // Reused chunk after chunk (their strings keep their capacity).
+  std::vector<Pending> pending(kChunkRows);
+  std::vector<ContactInput> inputs;
+  inputs.reserve(kChunkRows);
+  std::vector<std::vector<FrictionForces>> forces(laws.size());
+  std::vector<std::vector<std::string>> rejected(laws.size());  // per law and row: why, or empty
+  const auto flush = [&] {
+    const std::size_t n = inputs.size();
+    for (std::size_t i = 0; i < laws.size(); ++i) {
+      forces[i].resize(n);
+      rejected[i].assign(n, std::string());
+      const std::span<const ContactInput> all(inputs);
+      const std::span<FrictionForces> results(forces[i]);
+      for (std::size_t start = 0; start < n;) {
+        try {
+          laws[i]->evaluate(all.subspan(start), results.subspan(start));
+          break;
+        } catch (const BatchError& e) {
+          try {
+            std::rethrow_exception(e.cause());  // only a rejected input is a bad row
+          } catch (const std::invalid_argument&) {
+          }
+          const std::size_t j = start + e.index();
+          rejected[i][j] = e.cause_message();
+          start = j + 1;
+        }
+      }
+    }
+    for (std::size_t j = 0; j < n; ++j) {
+      line.assign(pending[j].line);
+      for (std::size_t i = 0; i < laws.size(); ++i) {
+        if (!rejected[i][j].empty()) {
+          bad_row(pending[j].number, (several ? std::string(laws[i]->spec()) + ": " : std::string()) + rejected[i][j],
+                  laws[i]);
+          continue;
+        }
+        row.assign(line);
+        row += law_field[i];
+        row += ',';
+        append_forces(row, forces[i][j]);
+        row += '\n';
+        write_checked(dest, row);
+        ++summary.written;
+      }
+    }
+    inputs.clear();
+  };
+  std::string parsed_line;
+  const auto parse_error = [&](std::size_t line_number, const std::string& reason) {
+    parsed_line.assign(line);
+    flush();  // the rows before it first
+    line.assign(parsed_line);
+    bad_row(line_number, reason, nullptr);
+  };
   for (errno = 0; std::getline(in, line); errno = 0) {
     ++number;
     if (!line.empty() && line.back() == '\r') line.pop_back();
@@ -257,36 +323,22 @@ BatchSummary evaluate_csv(const std::vector<const FrictionLaw*>& laws, std::istr
     ++summary.rows;
     split_into(line, fields);
     if (fields.size() != names.size()) {
-      bad_row(number, "has " + std::to_string(fields.size()) + " fields, the header has " + std::to_string(names.size()),
-              nullptr);
+      parse_error(number, "has " + std::to_string(fields.size()) + " fields, the header has " + std::to_string(names.size()));
       continue;
     }
     std::array<double, kInputColumns.size()> v{};
     try {
       for (std::size_t c = 0; c < v.size(); ++c) v[c] = parse_number(fields[column[c]], kInputColumns[c]);
     } catch (const RowError& e) {
-      bad_row(number, e.message, nullptr);
+      parse_error(number, e.message);
       continue;
     }
-    const ContactInput input{v[0], v[1], v[2], v[3], v[4], v[5], v[6]};
-    for (std::size_t i = 0; i < laws.size(); ++i) {
-      const FrictionLaw* law = laws[i];
-      FrictionForces forces;
-      try {
-        forces = law->evaluate(input);
-      } catch (const std::invalid_argument& e) {
-        bad_row(number, (several ? std::string(law->spec()) + ": " : std::string()) + e.what(), law);
-        continue;
-      }
-      row.assign(line);
-      row += law_field[i];
-      row += ',';
-      append_forces(row, forces);
-      row += '\n';
-      write_checked(dest, row);
-      ++summary.written;
-    }
+    pending[inputs.size()].number = number;
+    pending[inputs.size()].line.assign(line);
+    inputs.push_back(ContactInput{v[0], v[1], v[2], v[3], v[4], v[5], v[6]});
+    if (inputs.size() == kChunkRows) flush();
   }
+  flush();
   check_read(in, options.input_name);
   if (spool) spool->copy_to(out);
   flush_checked(out);

@@ -43,6 +43,44 @@ void require_valid_orientation(const PatchAngle& psi) {
 
 }  // namespace
 
+BatchError::BatchError(std::size_t index, std::exception_ptr cause, const std::string& cause_message)
+    : std::invalid_argument("contact " + std::to_string(index) + ": " + cause_message),
+      index_(index),
+      cause_(std::move(cause)),
+      cause_message_(cause_message) {}
+
+void FrictionLaw::evaluate(std::span<const ContactInput> in, std::span<FrictionForces> out) const {
+  if (in.size() != out.size()) {
+    throw std::invalid_argument("a batch of " + std::to_string(in.size()) + " contacts needs as many results, not " +
+                                std::to_string(out.size()));
+  }
+  // The valid prefix is evaluated, then the first invalid contact is reported.
+  std::size_t valid = 0;
+  std::exception_ptr invalid;
+  std::string message;
+  for (; valid < in.size(); ++valid) {
+    try {
+      validate(in[valid]);
+    } catch (const std::invalid_argument& e) {
+      invalid = std::current_exception();
+      message = e.what();
+      break;
+    }
+  }
+  do_evaluate_batch(in.first(valid), out.first(valid));
+  if (invalid) throw BatchError(valid, invalid, message);
+}
+
+void FrictionLaw::do_evaluate_batch(std::span<const ContactInput> in, std::span<FrictionForces> out) const {
+  for (std::size_t i = 0; i < in.size(); ++i) {
+    try {
+      out[i] = do_evaluate(in[i]);
+    } catch (const std::exception& e) {
+      throw BatchError(i, std::current_exception(), e.what());
+    }
+  }
+}
+
 PoleDenominators FrictionLaw::pole_denominators(const ContactInput& /*in*/) const {
   constexpr double nan = std::numeric_limits<double>::quiet_NaN();
   return {nan, nan, nan};

@@ -7,6 +7,10 @@
 // counter-clockwise about gamma. The law returns F1, F2, M such that the friction force on the body
 // is F = -F1 e1 - F2 e2 and the friction torque about the patch centre is -M gamma.
 
+#include <cstddef>
+#include <exception>
+#include <span>
+#include <stdexcept>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -87,6 +91,22 @@ struct LawPromises {
   [[nodiscard]] static LawPromises closed_form_without_F2();
 };
 
+/// Where an evaluation of many contacts (FrictionLaw::evaluate of spans) stopped, and why: the index
+/// of the contact, and the exception evaluate() of that contact alone throws (cause(), to rethrow);
+/// what() is "contact INDEX: " and the cause's message.
+class BatchError : public std::invalid_argument {
+ public:
+  BatchError(std::size_t index, std::exception_ptr cause, const std::string& cause_message);
+  [[nodiscard]] std::size_t index() const { return index_; }
+  [[nodiscard]] std::exception_ptr cause() const { return cause_; }
+  [[nodiscard]] const std::string& cause_message() const { return cause_message_; }
+
+ private:
+  std::size_t index_;
+  std::exception_ptr cause_;
+  std::string cause_message_;
+};
+
 /// A law of coupled dry friction. Implementations are `final`, stateless after construction,
 /// and safe to call concurrently from several threads.
 class FrictionLaw {
@@ -116,6 +136,13 @@ class FrictionLaw {
     return do_evaluate(in);
   }
 
+  /// Evaluates every contact of `in` into the same position of `out`: the values evaluate() gives
+  /// each, bit for bit, in one call (a law may evaluate several contacts at once, e.g. across SIMD
+  /// lanes). `in` and `out` have the same size (std::invalid_argument otherwise). At the first
+  /// contact that is invalid or that the law rejects it throws BatchError (its index, the cause);
+  /// `out` then holds the results of the contacts before it.
+  void evaluate(std::span<const ContactInput> in, std::span<FrictionForces> out) const;
+
  protected:
   FrictionLaw() = default;
   FrictionLaw(const FrictionLaw&) = default;
@@ -128,6 +155,10 @@ class FrictionLaw {
 
   /// Evaluates on validated input.
   [[nodiscard]] virtual FrictionForces do_evaluate(const ContactInput& in) const = 0;
+  /// Evaluates validated contacts (equal sizes); by default do_evaluate() on each, in order. An
+  /// override gives the same values as do_evaluate(), and at a contact it rejects throws BatchError
+  /// with that index after filling `out` before it.
+  virtual void do_evaluate_batch(std::span<const ContactInput> in, std::span<FrictionForces> out) const;
 };
 
 }  // namespace frictionlab::friction

@@ -4,6 +4,7 @@
 #include <atomic>
 #include <exception>
 #include <mutex>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <thread>
@@ -27,27 +28,29 @@ LawValues evaluate_on_grid(const friction::FrictionLaw& law, const Grid& grid, s
   std::atomic<std::size_t> next_slice{0};
   std::exception_ptr error;
   std::mutex error_mutex;
+  // A slice (one axis ratio) at a time, evaluated in one call (the law's batch evaluation).
   auto work = [&] {
+    std::vector<friction::ContactInput> in(grid.slice_size());
+    std::vector<friction::FrictionForces> f(grid.slice_size());
     for (std::size_t imu = next_slice++; imu < grid.mu().size(); imu = next_slice++) {
       const std::size_t begin = imu * grid.slice_size();
-      const std::size_t end = begin + grid.slice_size();
-      for (std::size_t i = begin; i < end; ++i) {
-        const GridPoint p = grid.point(i);
-        try {
-          const auto f = law.evaluate(to_contact(p));
-          out.F1[i] = f.F1;
-          out.F2[i] = f.F2;
-          out.M[i] = f.M;
-        } catch (const std::exception& e) {
-          const std::string msg = "law '" + std::string(law.name()) + "' failed at s = " +
-                                  support::message_number(p.s) + ", mu = " + support::message_number(p.mu) +
-                                  ", psi = " + support::message_number(p.psi) +
-                                  ", sign(Omega) = " + std::to_string(p.sign) + ": " + e.what();
-          const std::lock_guard lock(error_mutex);
-          if (!error) error = std::make_exception_ptr(std::runtime_error(msg));
-          next_slice = grid.mu().size();  // stop the other workers early
-          return;
-        }
+      for (std::size_t j = 0; j < in.size(); ++j) in[j] = to_contact(grid.point(begin + j));
+      try {
+        law.evaluate(std::span<const friction::ContactInput>(in), std::span<friction::FrictionForces>(f));
+      } catch (const friction::BatchError& e) {
+        const GridPoint p = grid.point(begin + e.index());
+        const std::string msg = "law '" + std::string(law.name()) + "' failed at s = " + support::message_number(p.s) +
+                                ", mu = " + support::message_number(p.mu) + ", psi = " + support::message_number(p.psi) +
+                                ", sign(Omega) = " + std::to_string(p.sign) + ": " + e.cause_message();
+        const std::lock_guard lock(error_mutex);
+        if (!error) error = std::make_exception_ptr(std::runtime_error(msg));
+        next_slice = grid.mu().size();  // stop the other workers early
+        return;
+      }
+      for (std::size_t j = 0; j < f.size(); ++j) {
+        out.F1[begin + j] = f[j].F1;
+        out.F2[begin + j] = f[j].F2;
+        out.M[begin + j] = f[j].M;
       }
     }
   };

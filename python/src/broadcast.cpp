@@ -1,7 +1,10 @@
 #include "broadcast.h"
 
 #include <exception>
+#include <optional>
+#include <span>
 #include <stdexcept>
+#include <vector>
 
 namespace frictionlab::python {
 namespace {
@@ -103,10 +106,12 @@ std::optional<ElementError> evaluate_all(const friction::FrictionLaw& law, const
   std::vector<py::ssize_t> counter(outer_dims, 0);
   std::array<const char*, 7> base = in.data;
   std::size_t flat = 0;
+  // Each run of the last dimension is gathered and evaluated in one call (the law's batch evaluation).
+  std::vector<friction::ContactInput> row(static_cast<std::size_t>(inner));
+  std::vector<friction::FrictionForces> forces(row.size());
   while (true) {
     std::array<const char*, 7> p = base;
-    for (py::ssize_t j = 0; j < inner; ++j, ++flat) {
-      friction::ContactInput c;
+    for (auto& c : row) {
       c.U = *reinterpret_cast<const double*>(p[0]);
       c.Omega = *reinterpret_cast<const double*>(p[1]);
       c.a = *reinterpret_cast<const double*>(p[2]);
@@ -114,20 +119,31 @@ std::optional<ElementError> evaluate_all(const friction::FrictionLaw& law, const
       c.psi = *reinterpret_cast<const double*>(p[4]);
       c.N = *reinterpret_cast<const double*>(p[5]);
       c.k = *reinterpret_cast<const double*>(p[6]);
-      try {
-        const friction::FrictionForces f = law.evaluate(c);
-        F1[flat] = f.F1;
-        F2[flat] = f.F2;
-        M[flat] = f.M;
-      } catch (const std::invalid_argument& e) {
-        return ElementError{flat, e.what(), true};
-      } catch (const std::domain_error& e) {  // input outside where the law can be computed
-        return ElementError{flat, e.what(), true};
-      } catch (const std::exception& e) {
-        return ElementError{flat, e.what(), false};
-      }
       for (std::size_t i = 0; i < 7; ++i) p[i] += inner_stride[i];
     }
+    std::size_t done = row.size();
+    std::optional<ElementError> failed;
+    try {
+      law.evaluate(std::span<const friction::ContactInput>(row), std::span<friction::FrictionForces>(forces));
+    } catch (const friction::BatchError& e) {
+      done = e.index();
+      try {
+        std::rethrow_exception(e.cause());
+      } catch (const std::invalid_argument&) {
+        failed = ElementError{flat + done, e.cause_message(), true};
+      } catch (const std::domain_error&) {  // input outside where the law can be computed
+        failed = ElementError{flat + done, e.cause_message(), true};
+      } catch (...) {
+        failed = ElementError{flat + done, e.cause_message(), false};
+      }
+    }
+    for (std::size_t j = 0; j < done; ++j) {
+      F1[flat + j] = forces[j].F1;
+      F2[flat + j] = forces[j].F2;
+      M[flat + j] = forces[j].M;
+    }
+    if (failed) return failed;
+    flat += row.size();
     // Next outer index: the last outer dimension fastest (C order).
     std::size_t d = outer_dims;
     while (d > 0) {

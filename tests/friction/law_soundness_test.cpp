@@ -9,12 +9,14 @@
 
 #include <bit>
 #include <cctype>
-#include <cstdint>
 #include <cmath>
+#include <cstdint>
+#include <exception>
 #include <limits>
 #include <numbers>
 #include <memory>
 #include <random>
+#include <span>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -371,6 +373,54 @@ int expect_finite_or_rejected(const FrictionLaw& law, const LawPromises& promise
     expect_promised_bounds(promises, in, f);
   }
   return valid;
+}
+
+// Many contacts in one call give what evaluate() gives each, bit for bit; the batch stops at the
+// first contact that is invalid or rejected, naming its index, with the results before it kept.
+TEST_P(LawSoundness, ABatchGivesEachContactsValuesAndStopsAtTheFirstItRejects) {
+  std::vector<ContactInput> inputs = every_axis_ratio_inputs(points(info(), 200, kSlowLawPoints), 11);
+  // The single evaluations; the batch is cut before the first one the law rejects.
+  std::vector<FrictionForces> single;
+  std::exception_ptr rejected;
+  for (const auto& in : inputs) {
+    try {
+      single.push_back(law().evaluate(in));
+    } catch (const std::invalid_argument&) {
+      rejected = std::current_exception();
+      break;
+    }
+  }
+  const std::size_t first_rejected = single.size();
+  std::vector<FrictionForces> batch(inputs.size());
+  try {
+    law().evaluate(std::span<const ContactInput>(inputs), std::span<FrictionForces>(batch));
+    EXPECT_EQ(first_rejected, inputs.size()) << "the batch accepted what evaluate() rejects";
+  } catch (const BatchError& e) {
+    EXPECT_EQ(e.index(), first_rejected) << e.what();
+    EXPECT_NE(std::string(e.what()).find("contact " + std::to_string(first_rejected) + ": "), std::string::npos);
+  }
+  for (std::size_t i = 0; i < first_rejected; ++i) {
+    EXPECT_EQ(std::bit_cast<std::uint64_t>(batch[i].F1), std::bit_cast<std::uint64_t>(single[i].F1)) << i;
+    EXPECT_EQ(std::bit_cast<std::uint64_t>(batch[i].F2), std::bit_cast<std::uint64_t>(single[i].F2)) << i;
+    EXPECT_EQ(std::bit_cast<std::uint64_t>(batch[i].M), std::bit_cast<std::uint64_t>(single[i].M)) << i;
+  }
+  // An invalid contact (N < 0) in the middle: index named, the results before it kept.
+  inputs.resize(std::min<std::size_t>(first_rejected, 6));
+  if (inputs.size() < 3) return;
+  inputs[2].N = -1.0;
+  std::vector<FrictionForces> part(inputs.size());
+  try {
+    law().evaluate(std::span<const ContactInput>(inputs), std::span<FrictionForces>(part));
+    ADD_FAILURE() << "N = -1 accepted";
+  } catch (const BatchError& e) {
+    EXPECT_EQ(e.index(), 2u);
+    EXPECT_NE(std::string(e.what()).find("friction input N"), std::string::npos) << e.what();
+    EXPECT_THROW(std::rethrow_exception(e.cause()), std::invalid_argument);
+  }
+  EXPECT_EQ(part[1].M, single[1].M);
+  std::vector<FrictionForces> wrong(inputs.size() + 1);
+  EXPECT_THROW(law().evaluate(std::span<const ContactInput>(inputs), std::span<FrictionForces>(wrong)),
+               std::invalid_argument);
 }
 
 TEST_P(LawSoundness, FiniteOrRejectedOverExtremeMagnitudes) {
