@@ -233,7 +233,7 @@ double ExactTable::pure_spin_moment(double mu, double ln_mu) const {
 }
 
 ExactTableValue ExactTable::at(double Xt, double Yt, double mu, double ln_mu) const {
-  // docs/exact-table.md "Evaluation, in order", steps 4-8.
+  // docs/exact-table.md "Evaluation, in order", steps 5-8.
   const UniformCell ct = uniform_cell((std::sqrt(std::sqrt(mu)) - 1.0) * t_scale_, 1.0, kNt - 2);
   const double Ys = Yt / mu;
   const double r2 = Xt * Xt + Ys * Ys;

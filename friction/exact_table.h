@@ -58,7 +58,7 @@ class ExactTable {
 
   /// Builds the table of `pressure` from ExactLaw (friction/exact_law.h): one evaluation of it per
   /// node, a few more on the rows where fx or fy vanishes (about 0.22 M in all), then one banded
-  /// solve per axis. Tens of milliseconds (friction/exact_table_law.h gives the measured times).
+  /// solve per axis. About 0.1 to 0.3 s (friction/exact_table_law.h gives the measured times).
   explicit ExactTable(Pressure pressure);
 
   /// The table of `pressure`, built at the first call for that pressure and then shared for the

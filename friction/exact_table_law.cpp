@@ -74,7 +74,7 @@ FrictionForces ExactTableLaw::do_evaluate(const ContactInput& in) const {
   const double ln_mu = std::log(mu);
   const double M0 = table.pure_spin_moment(mu, ln_mu);  // step 4
   if (s == 0.0) return {0.0, 0.0, sign * kNa * M0};     // pure spin: the table's centre, m = 1
-  const ExactTableValue g = table.at(s * sn, s * c, mu, ln_mu);  // steps 3, 5-8
+  const ExactTableValue g = table.at(s * sn, s * c, mu, ln_mu);  // steps 5-8
   // Step 9: G back to the slip frame.
   const double F1 = -(g.gx * sn + g.gy * c);
   const double F2 = g.gx * c - g.gy * sn;
