@@ -20,6 +20,10 @@
 // iteration is one batch, items_per_second counts contacts, so its time per item compares with
 // BM_law's time per evaluation.
 //
+// `BM_exact_table_build/<pressure>` times what the first evaluation of `exact-table` with that
+// pressure costs once per process: building its table from `exact` (friction/exact_table.h),
+// counters exact_evaluations (calls of exact) and bytes (of coefficients).
+//
 // Counters (units in the names; kN means k times N, the friction coefficient times the normal
 // force, not kilonewtons): max_err_F1_kN, max_err_F2_kN (largest |law - exact| of F1, F2 divided by
 // k N), max_err_M_kNa (of M divided by k N a), allocs_per_eval (calls of operator new per
@@ -40,6 +44,8 @@
 
 #include "bench/allocation_counter.h"
 #include "bench/law_input_set.h"
+#include "friction/exact_table.h"
+#include "friction/pressure.h"
 #include "friction/registry.h"
 #include "friction/reference_laws.h"
 
@@ -164,6 +170,23 @@ void register_law(const friction::LawInfo& info, const std::vector<friction::Con
   register_batch_timing(info.spec, law, set, lazy);
 }
 
+// The table of exact-table for one pressure, built from exact as at its first evaluation.
+void register_table_build(friction::Pressure pressure) {
+  const std::string name = "BM_exact_table_build/" + std::string(friction::pressure_name(pressure));
+  benchmark::RegisterBenchmark(name.c_str(), [pressure](benchmark::State& state) {
+    long evaluations = 0;
+    std::size_t bytes = 0;
+    for (auto _ : state) {
+      const friction::ExactTable table(pressure);
+      evaluations = table.exact_evaluations();
+      bytes = table.bytes();
+      benchmark::DoNotOptimize(bytes);
+    }
+    state.counters["exact_evaluations"] = static_cast<double>(evaluations);
+    state.counters["bytes"] = static_cast<double>(bytes);
+  })->Unit(benchmark::kMillisecond);
+}
+
 }  // namespace
 }  // namespace frictionlab::bench
 
@@ -173,6 +196,9 @@ int main(int argc, char** argv) {
   // Every law, and every variant of its choice parameters (e.g. each pressure model of `exact`).
   for (const auto& spec : frictionlab::friction::list_law_specs()) {
     frictionlab::bench::register_law(frictionlab::friction::law_info(spec), set);
+  }
+  for (const auto& pressure : frictionlab::friction::pressure_names()) {
+    frictionlab::bench::register_table_build(frictionlab::friction::parse_pressure(pressure));
   }
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;

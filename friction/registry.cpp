@@ -10,6 +10,7 @@
 #include "friction/decoupled_law.h"
 #include "friction/ellipsoidal_law.h"
 #include "friction/exact_law.h"
+#include "friction/exact_table_law.h"
 #include "friction/mujoco_elliptic_law.h"
 #include "friction/pade_printed_law.h"
 #include "friction/pade_reconstructed_law.h"
@@ -71,6 +72,10 @@ class Registry {
     add(built_in([](const LawArguments& a) { return std::make_unique<ExactLaw>(parse_pressure(a.choice("pressure"))); },
                  ExactLaw::parameters(),
                  /*reference=*/true));
+    // The exact law tabulated, for each pressure: its table is built at its first evaluation.
+    add(built_in(
+        [](const LawArguments& a) { return std::make_unique<ExactTableLaw>(parse_pressure(a.choice("pressure"))); },
+        ExactTableLaw::parameters()));
     // exact-reference, the GSL cross-check, is registered by its own library
     // (friction/reference_laws.h), so that the laws link no GPL code.
     add(built_in([](const LawArguments&) { return std::make_unique<PadePrintedLaw>(PadeAlpha::major); }));

@@ -1,0 +1,92 @@
+#pragma once
+// The table of `exact-table` (friction/exact_table_law.h) for one pressure model: tensor-product
+// B-spline coefficients of the exact law's forces and moment, built from ExactLaw in this process,
+// and their evaluation at one instantaneous centre of rotation (ICR). The design (coordinates,
+// node layout, spline scheme, end conditions, storage) is the table design of
+// docs/exact-table.md; the section names below are that document's.
+//
+// Dimensionless (a = N = k = 1, Omega > 0): the ICR in the patch axes (x along the major axis) is
+// (Xt, Yt) = s (sin psi, cos psi), s = U/(a|Omega|); the axis ratio is mu = b/a in [0.01, 1]. The
+// table stores three functions u, v, m, even in Xt and in Yt, smooth on each of two blocks:
+//
+//   G = (Gx, Gy) = (fx u, fy v)   the patch-frame force per kN: F1 = -(Gx sin psi + Gy cos psi),
+//                                 F2 = Gx cos psi - Gy sin psi;
+//   m = M / M0                    the moment as a fraction of the pure-spin moment
+//                                 M0 = c_p E(e) (c_p = pressure_pure_spin_factor, e^2 = 1 - mu^2).
+//
+// Blocks and coordinates ("Coordinates"), each mapped to [0, 1]^3 = (xi, zeta, t):
+//   * inside, r2 = Xt^2 + (Yt/mu)^2 <= 1: rho = sqrt(r2), xi = 1 - sqrt(1 - rho),
+//     zeta = |Yt/mu|/rho, fx = Xt, fy = Yt/mu;
+//   * outside: B, A the semi-axes of the ellipse confocal with the patch through the ICR (foci
+//     +-sqrt(1 - mu^2)), sigma = ln(B/mu) (0 on the rim), xi = sqrt(sigma/(sigma + s0)),
+//     s0 = 2 + ln(1/mu) (xi = 1 is s = inf), zeta = |Yt|/B, fx = Xt/A, fy = Yt/B;
+//   * both: t = (mu^(1/4) - 1)/(0.01^(1/4) - 1).
+// Splines ("Node layout and scheme"): uniform nodes, knots at the nodes; cubic in xi (48 nodes
+// inside, 192 outside) and zeta (32), quintic in t (25). End conditions: zero slope at both xi
+// ends (the centre, the rim from either side, and s = inf) and at zeta = 0, not-a-knot at
+// zeta = 1 and at both t ends. The two blocks take the same data on the rim, so they agree there
+// to rounding.
+// Storage ("Storage"): [t][xi][zeta][u, v, m] doubles, 29 x 50 x 34 x 3 inside and
+// 29 x 194 x 34 x 3 outside, 5,774,016 bytes per pressure.
+
+#include <cstddef>
+#include <vector>
+
+#include "friction/pressure.h"
+
+namespace frictionlab::friction {
+
+/// The smallest axis ratio b/a the table covers (its t axis ends there).
+inline constexpr double kExactTableMinAxisRatio = 0.01;
+
+/// The table at one ICR: the patch-frame force per kN and the moment per pure-spin moment.
+struct ExactTableValue {
+  double gx;  ///< G along the major axis, per kN
+  double gy;  ///< G along the minor axis, per kN
+  double m;   ///< M / M0, M0 = pure_spin_moment()
+};
+
+/// The B-spline table of the exact law for one pressure model. Immutable once built; safe to read
+/// concurrently.
+class ExactTable {
+ public:
+  // The node layout of docs/exact-table.md.
+  static constexpr int kInsideRadialNodes = 48;
+  static constexpr int kOutsideRadialNodes = 192;  ///< the last at s = inf
+  static constexpr int kAngularNodes = 32;
+  static constexpr int kAxisRatioNodes = 25;
+
+  /// Builds the table of `pressure` from ExactLaw (friction/exact_law.h): one evaluation of it per
+  /// node, a few more on the rows where fx or fy vanishes (about 0.22 M in all), then one banded
+  /// solve per axis. About 0.1 to 0.3 s (friction/exact_table_law.h gives the measured times).
+  explicit ExactTable(Pressure pressure);
+
+  /// The table of `pressure`, built at the first call for that pressure and then shared for the
+  /// life of the process; thread-safe (a function-local static per pressure).
+  [[nodiscard]] static const ExactTable& of(Pressure pressure);
+
+  [[nodiscard]] Pressure pressure() const { return pressure_; }
+
+  /// M0 / (kNa) = c_p E(e), e^2 = 1 - mu^2, for mu in [0.01, 1], ln_mu = ln(mu): the pure-spin
+  /// moment (friction/elliptic_e_fit.h, relative error below 1.3e-14).
+  [[nodiscard]] double pure_spin_moment(double mu, double ln_mu) const;
+
+  /// (Gx, Gy, m) at the ICR (Xt, Yt) (patch axes, units of a; finite, |Xt|, |Yt| <= 1e8) for
+  /// mu in [0.01, 1], ln_mu = ln(mu). No allocation.
+  [[nodiscard]] ExactTableValue at(double Xt, double Yt, double mu, double ln_mu) const;
+
+  /// Bytes of coefficients (5,774,016).
+  [[nodiscard]] std::size_t bytes() const { return (inside_.size() + outside_.size()) * sizeof(double); }
+  /// How many times the build evaluated ExactLaw.
+  [[nodiscard]] long exact_evaluations() const { return exact_evaluations_; }
+
+ private:
+  Pressure pressure_;
+  double pure_spin_factor_;
+  double t_scale_;  // (n - 1)/(0.01^(1/4) - 1): t (n - 1) = (mu^(1/4) - 1) t_scale_
+  long exact_evaluations_ = 0;
+  std::vector<double> inside_;   // [t][xi][zeta][3]
+  std::vector<double> outside_;  // [t][xi][zeta][3]
+};
+
+}  // namespace frictionlab::friction
