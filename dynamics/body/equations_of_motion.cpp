@@ -206,9 +206,11 @@ void BodyOnPlane::derivatives(const StateVector& x, const ContactState& c, State
   // by |q|^2 (no square root: the rates are evaluated at every stage of every step).
   const double qn2 = q.squaredNorm();
   if (qn2 > 0.0) {
-    const double w0 = q[0], x = q[1], y = q[2], z = q[3];
-    const double vx = (w0 * w0 + x * x - y * y - z * z) * v[0] + 2.0 * (x * y - w0 * z) * v[1] + 2.0 * (x * z + w0 * y) * v[2];
-    const double vy = 2.0 * (x * y + w0 * z) * v[0] + (w0 * w0 - x * x + y * y - z * z) * v[1] + 2.0 * (y * z - w0 * x) * v[2];
+    const double w0 = q[0], qx = q[1], qy = q[2], qz = q[3];
+    const double vx = (w0 * w0 + qx * qx - qy * qy - qz * qz) * v[0] + 2.0 * (qx * qy - w0 * qz) * v[1] +
+                      2.0 * (qx * qz + w0 * qy) * v[2];
+    const double vy = 2.0 * (qx * qy + w0 * qz) * v[0] + (w0 * w0 - qx * qx + qy * qy - qz * qz) * v[1] +
+                      2.0 * (qy * qz - w0 * qx) * v[2];
     position(dxdt) << vx / qn2, vy / qn2;
   } else {
     position(dxdt).setZero();
