@@ -20,18 +20,10 @@ constexpr double kFastSlipRatio = 1e8;
 
 std::vector<LawParameter> ExactTableLaw::parameters() { return ExactLaw::parameters(); }
 
+// Every property of the exact law (it is the exact law, tabulated), to the table's accuracy and on
+// its range of axis ratios.
 LawPromises ExactTableLaw::promises() const {
-  LawPromises p;
-  p.F1_in_Omega = Parity::even;
-  p.F2_in_Omega = Parity::even;
-  p.M_in_Omega = Parity::odd;
-  p.pi_periodic_in_psi = true;
-  p.psi_mirror = true;
-  p.dissipative = true;
-  p.bounded = true;
-  p.whole_domain = true;
-  p.exact_pure_spin = true;
-  p.pure_spin_factor = pressure_pure_spin_factor(pressure_);
+  LawPromises p = ExactLaw(pressure_).promises();
   p.min_axis_ratio = kExactTableMinAxisRatio;
   p.tolerance = kExactTableAccuracy;
   return p;
