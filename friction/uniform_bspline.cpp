@@ -40,6 +40,7 @@ std::vector<double> system_matrix(int degree, int n, SplineEnd left, SplineEnd r
       const double d4[] = {-1.0, 4.0, -6.0, 4.0, -1.0};
       for (int j = 0; j < 5; ++j) at(r, n - 3 + j) = d4[j];
     }
+    ++r;
   } else {
     // Not-a-knot: the 6th difference about nodes 1, 2 and n - 3, n - 2.
     const double d6[] = {1.0, -6.0, 15.0, -20.0, 15.0, -6.0, 1.0};
