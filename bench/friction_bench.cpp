@@ -24,6 +24,11 @@
 // pressure costs once per process: building its table from `exact` (friction/exact_table.h),
 // counters exact_evaluations (calls of exact) and bytes (of coefficients).
 //
+// `BM_fit_standalone/forces` times what an engine pays for `fit` when it keeps each contact's
+// geometry (frictionlab_fit::make_geometry, once per patch shape) and has the patch axes as a
+// direction: frictionlab_fit::evaluate of friction/standalone/fit_law.h on the same contacts;
+// `BM_fit_standalone/geometry` times make_geometry alone. Compare with BM_law_direction/<spec>.
+//
 // Counters (units in the names; kN means k times N, the friction coefficient times the normal
 // force, not kilonewtons): max_err_F1_kN, max_err_F2_kN (largest |law - exact| of F1, F2 divided by
 // k N), max_err_M_kNa (of M divided by k N a), allocs_per_eval (calls of operator new per
@@ -48,6 +53,7 @@
 #include "friction/pressure.h"
 #include "friction/registry.h"
 #include "friction/reference_laws.h"
+#include "friction/standalone/fit_law.h"
 
 namespace frictionlab::bench {
 namespace {
@@ -187,6 +193,40 @@ void register_table_build(friction::Pressure pressure) {
   })->Unit(benchmark::kMillisecond);
 }
 
+// The standalone header of `fit` as an engine calls it: the geometry per contact kept, the axes
+// as a direction.
+void register_fit_standalone(const std::vector<friction::ContactInput>& full) {
+  struct Contact {
+    frictionlab_fit::Geometry geometry;
+    double U, Omega, a, c, s, N, k;
+  };
+  auto contacts = std::make_shared<std::vector<Contact>>();
+  for (const friction::ContactInput& in : full) {
+    const friction::PatchAngle::CosSin axis = in.psi.cos_sin();
+    contacts->push_back({frictionlab_fit::make_geometry(in.b / in.a, frictionlab_fit::Pressure::hertz), in.U, in.Omega,
+                         in.a, axis.c, axis.s, in.N, in.k});
+  }
+  benchmark::RegisterBenchmark("BM_fit_standalone/forces", [contacts](benchmark::State& state) {
+    std::size_t i = 0;
+    for (auto _ : state) {
+      const Contact& c = (*contacts)[i];
+      benchmark::DoNotOptimize(frictionlab_fit::evaluate(c.geometry, c.U, c.Omega, c.a, c.c, c.s, c.N, c.k));
+      if (++i == contacts->size()) i = 0;
+    }
+    state.counters["inputs"] = static_cast<double>(contacts->size());
+  });
+  auto ratios = std::make_shared<std::vector<double>>();
+  for (const friction::ContactInput& in : full) ratios->push_back(in.b / in.a);
+  benchmark::RegisterBenchmark("BM_fit_standalone/geometry", [ratios](benchmark::State& state) {
+    std::size_t i = 0;
+    for (auto _ : state) {
+      benchmark::DoNotOptimize(frictionlab_fit::make_geometry((*ratios)[i], frictionlab_fit::Pressure::hertz));
+      if (++i == ratios->size()) i = 0;
+    }
+    state.counters["inputs"] = static_cast<double>(ratios->size());
+  });
+}
+
 }  // namespace
 }  // namespace frictionlab::bench
 
@@ -200,6 +240,7 @@ int main(int argc, char** argv) {
   for (const auto& pressure : frictionlab::friction::pressure_names()) {
     frictionlab::bench::register_table_build(frictionlab::friction::parse_pressure(pressure));
   }
+  frictionlab::bench::register_fit_standalone(set);
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
   benchmark::RunSpecifiedBenchmarks();

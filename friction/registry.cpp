@@ -11,6 +11,7 @@
 #include "friction/ellipsoidal_law.h"
 #include "friction/exact_law.h"
 #include "friction/exact_table_law.h"
+#include "friction/fit_law.h"
 #include "friction/mujoco_elliptic_law.h"
 #include "friction/pade_printed_law.h"
 #include "friction/pade_reconstructed_law.h"
@@ -76,6 +77,9 @@ class Registry {
     add(built_in(
         [](const LawArguments& a) { return std::make_unique<ExactTableLaw>(parse_pressure(a.choice("pressure"))); },
         ExactTableLaw::parameters()));
+    // The closed form fitted to the exact law, for each pressure (docs/fit.md).
+    add(built_in([](const LawArguments& a) { return std::make_unique<FitLaw>(parse_pressure(a.choice("pressure"))); },
+                 FitLaw::parameters()));
     // exact-reference, the GSL cross-check, is registered by its own library
     // (friction/reference_laws.h), so that the laws link no GPL code.
     add(built_in([](const LawArguments&) { return std::make_unique<PadePrintedLaw>(PadeAlpha::major); }));

@@ -3,8 +3,8 @@
 
     E = P(m1) - ln(m1) Q(m1),   m1 = mu^2,   P of degree 8, Q of degree 8 with Q(0) = 0,
 
-for the pure-spin moment M0 = c_p k N a E(e) of `exact-table` (friction/elliptic_e_fit.h; the
-table design of docs/exact-table.md). ln(m1) = 2 ln(mu) is the logarithm the table's coordinates
+for the pure-spin moment M0 = c_p k N a E(e) of `exact-table` (the table design of
+docs/exact-table.md) and of `fit` (docs/fit.md). ln(m1) = 2 ln(mu) is the logarithm the table's coordinates
 take anyway, so M0 costs no extra transcendental function.
 
 Least-squares fit of the monomial coefficients of P and Q (degrees 6, 8, 10, 12 tried; 8 kept)
@@ -14,9 +14,9 @@ points in [1e-8, 1], checked on 200,001 log-spaced mu in [0.01, 1]:
     /usr/bin/python3 friction/tools/fit_elliptic_e.py
 
 prints the largest relative error of each degree (degree 8: 1.26e-14) to stderr and the degree-8
-coefficients, as written in friction/elliptic_e_fit.h, to stdout. Debian 12's python3-numpy
-(1.24.2) and python3-scipy (1.10.1) reproduce them to the last digit (2026-11-29, 2-core AMD
-EPYC KVM guest).
+coefficients, as written in friction/standalone/fit_law.h (elliptic_e_fit, which
+friction/elliptic_e_fit.h calls), to stdout. Debian 12's python3-numpy (1.24.2) and
+python3-scipy (1.10.1) reproduce them to the last digit (2026-11-29, 2-core AMD EPYC KVM guest).
 """
 import sys
 

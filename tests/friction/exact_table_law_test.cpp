@@ -27,6 +27,7 @@
 #include "friction/exact_table_law.h"
 #include "friction/pressure.h"
 #include "friction/registry.h"
+#include "tests/friction/dense_check_set.h"
 #include "tests/friction/hertz_closed_forms.h"
 
 namespace frictionlab::friction {
@@ -57,41 +58,6 @@ ContactInput unit(double s, double mu, double psi, double omega = 1.0) { return 
 double output(const FrictionForces& f, int k) { return k == 0 ? f.F1 : (k == 1 ? f.F2 : f.M); }
 const char* const kOutputNames[] = {"F1/kN", "F2/kN", "M/kNa"};
 
-// The slip ratio at which the ICR (s sin psi, s cos psi) is on the rim of the patch.
-double rim_slip_ratio(double mu, double psi) {
-  const double sn = std::sin(psi);
-  const double c = std::cos(psi) / mu;
-  return 1.0 / std::sqrt(sn * sn + c * c);
-}
-
-// The check set of docs/exact-table.md: mu log-uniform in [0.01, 1], psi uniform in [0, 2 pi), the
-// spin's sign random; s a third log-uniform in [1e-4, 1e4], a third just inside the rim,
-// s_rim (1 - d), a third just outside, s_rim (1 + d), d log-uniform in [1e-6, 0.3]. Seeded.
-struct CheckPoint {
-  double s, mu, psi, omega;
-};
-
-std::vector<CheckPoint> check_set(int n, std::uint64_t seed) {
-  std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> uni(0.0, 1.0);
-  std::vector<CheckPoint> out;
-  out.reserve(static_cast<std::size_t>(n));
-  for (int i = 0; i < n; ++i) {
-    CheckPoint p;
-    p.mu = std::pow(kExactTableMinAxisRatio, uni(rng));
-    p.psi = 2.0 * kPi * uni(rng);
-    p.omega = uni(rng) < 0.5 ? 1.0 : -1.0;
-    const double d = std::pow(10.0, -6.0 + (6.0 + std::log10(0.3)) * uni(rng));
-    switch (i % 3) {
-      case 0: p.s = std::pow(10.0, -4.0 + 8.0 * uni(rng)); break;
-      case 1: p.s = rim_slip_ratio(p.mu, p.psi) * (1.0 - d); break;
-      default: p.s = rim_slip_ratio(p.mu, p.psi) * (1.0 + d); break;
-    }
-    out.push_back(p);
-  }
-  return out;
-}
-
 struct Worst {
   double error = 0.0;
   CheckPoint at{};
@@ -114,7 +80,7 @@ INSTANTIATE_TEST_SUITE_P(EveryPressure, ExactTablePressure, ::testing::ValuesIn(
 TEST_P(ExactTablePressure, WithinItsPromiseOfExactOnTheDenseCheckSet) {
   const ExactLaw exact(pressure());
   const ExactTableLaw table(pressure());
-  const auto set = check_set(kCheckPoints, 2024);
+  const auto set = check_set(kCheckPoints, 2024, kExactTableMinAxisRatio);
   Worst worst[3];
   for (const CheckPoint& p : set) {
     const ContactInput in = unit(p.s, p.mu, p.psi, p.omega);
