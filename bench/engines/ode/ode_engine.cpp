@@ -7,7 +7,10 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
+#include <cstdarg>
+#include <cstdio>
 #include <limits>
 #include <mutex>
 #include <stdexcept>
@@ -29,13 +32,33 @@ using Vec3 = std::array<double, 3>;
 // ---------------------------------------------------------------------------------------------
 // ODE's process-wide state.
 
+// ODE reports its errors and failed internal assertions (e.g. a quaternion gone non-finite) through
+// handlers that by default print and abort() the process (ode/src/error.cpp). Ours throw instead:
+// Engine::run promises a std::runtime_error with the engine's message. ODE is C++ inside (built
+// with exceptions) and every object of a run is owned by RAII below, but unwinding out of a step
+// leaves ODE's shared stepping job list half used (dCloseODE then fails its own assertion
+// "m_job_list == NULL"), so after an ODE error the library is not trusted again in this process:
+// later runs throw at once, and dCloseODE is skipped at exit.
+std::atomic<bool> ode_failed{false};
+
+[[noreturn]] void throw_ode_error(int errnum, const char* message, va_list arguments) {
+  std::array<char, 1024> text{};
+  std::vsnprintf(text.data(), text.size(), message, arguments);
+  ode_failed = true;
+  throw std::runtime_error("ODE error " + std::to_string(errnum) + ": " + support::one_line(text.data()));
+}
+
 // dInitODE2 once per process, dCloseODE at exit: a function-local static is initialised once,
 // thread-safely (C++11), and destroyed at exit.
 struct OdeLibrary {
   OdeLibrary() {
     if (dInitODE2(0) == 0) throw std::runtime_error("ODE: dInitODE2 failed");
+    dSetErrorHandler(&throw_ode_error);
+    dSetDebugHandler(&throw_ode_error);
   }
-  ~OdeLibrary() { dCloseODE(); }
+  ~OdeLibrary() {
+    if (!ode_failed) dCloseODE();
+  }
   OdeLibrary(const OdeLibrary&) = delete;
   OdeLibrary& operator=(const OdeLibrary&) = delete;
 };
@@ -58,6 +81,7 @@ void ensure_ode_ready_for_this_thread() {
     if (dAllocateODEDataForThread(dAllocateMaskAll) == 0) throw std::runtime_error("ODE: dAllocateODEDataForThread failed");
     allocated = true;
   }
+  if (ode_failed) throw std::runtime_error("ODE: an earlier run failed inside ODE in this process; its state is no longer trusted");
 }
 
 // RAII owners of the ODE objects of one run.
@@ -86,9 +110,6 @@ struct JointGroup {
 // ---------------------------------------------------------------------------------------------
 // Validation.
 
-void require_finite(const char* key, double value) {
-  if (!std::isfinite(value)) throw support::invalid_value(key, value, "it must be finite");
-}
 void require_positive(const char* key, double value) {
   if (!(std::isfinite(value) && value > 0.0)) throw support::invalid_value(key, value, "it must be finite and > 0");
 }
@@ -111,6 +132,8 @@ void validate_options(const OdeOptions& o) {
   require_non_negative("ode.contact_surface_layer", o.contact_surface_layer);
   require_positive("ode.contact_max_correcting_vel", o.contact_max_correcting_vel);
   // dCollide takes the count in the low 16 bits of its flags (collision.h, NUMC_MASK).
+  require_non_negative("ode.contact_kp", o.contact_kp);
+  require_non_negative("ode.contact_kd", o.contact_kd);
   if (o.max_contacts < 1 || o.max_contacts > 0xffff) {
     throw support::invalid_value("ode.max_contacts", static_cast<long long>(o.max_contacts), "it must lie in [1, 65535]");
   }
@@ -174,7 +197,7 @@ long long steps_in(const char* key, double duration, double h) {
 // The contact.
 
 // ODE's surface for Friction `f`. Cited: ode/src/joints/contact.cpp (dxJointContact::getInfo1/2).
-dSurfaceParameters surface_of(const Friction& f) {
+dSurfaceParameters surface_of(const Friction& f, const OdeOptions& o, double h) {
   dSurfaceParameters s{};
   // dContactApprox1 (= Approx1_1 | Approx1_2 | Approx1_N) sets findex = the normal row for the two
   // friction rows and the three rolling rows: their bounds become +-mu * lambda_normal (a
@@ -193,6 +216,11 @@ dSurfaceParameters surface_of(const Friction& f) {
     s.rho = f.rolling > 0.0 ? f.rolling : -1.0;
     s.rho2 = s.rho;
     s.rhoN = f.torsional > 0.0 ? f.torsional : -1.0;
+  }
+  if (o.contact_kp > 0.0) {  // Gazebo's spring-damper contact (OdeOptions::contact_kp)
+    s.mode |= dContactSoftERP | dContactSoftCFM;
+    s.soft_erp = h * o.contact_kp / (h * o.contact_kp + o.contact_kd);
+    s.soft_cfm = 1.0 / (h * o.contact_kp + o.contact_kd);
   }
   return s;
 }
@@ -297,7 +325,7 @@ Run OdeEngine::simulate(const RunSpec& spec) const {
   dBodySetQuaternion(body, dq);
   dBodySetPosition(body, com_offset[0], com_offset[1], z_centre + com_offset[2]);
 
-  const dSurfaceParameters surface = surface_of(spec.friction);
+  const dSurfaceParameters surface = surface_of(spec.friction, options_, h);
   JointGroup contacts;
   const auto max_contacts = static_cast<std::size_t>(options_.max_contacts);
   std::vector<dContact> contact(max_contacts);
@@ -366,19 +394,25 @@ Run OdeEngine::simulate(const RunSpec& spec) const {
   const std::string solver = quick ? "QuickStep (PGS) " + std::to_string(iterations) + " iterations, SOR " + support::shortest(options_.sor)
                                    : std::string("dWorldStep (exact LCP, Dantzig)");
   const Friction& f = spec.friction;
-  run.notes = "ODE " + std::string(dODE_VERSION) + " double; step " + support::shortest(h) + " s; " + solver + "; ERP " +
-              support::shortest(options_.erp) + ", CFM " + support::shortest(options_.cfm) + ", surface layer " +
-              support::shortest(options_.contact_surface_layer) + " m, max correcting vel " +
+  const std::string softness =
+      options_.contact_kp > 0.0
+          ? "contacts soft_erp " + support::shortest(surface.soft_erp) + ", soft_cfm " + support::shortest(surface.soft_cfm) +
+                " (Gazebo's kp " + support::shortest(options_.contact_kp) + " N/m, kd " + support::shortest(options_.contact_kd) + " N s/m)"
+          : "ERP " + support::shortest(options_.erp) + ", CFM " + support::shortest(options_.cfm);
+  const std::string spin =
+      f.torsional > 0.0 || f.rolling > 0.0
+          ? "dContactRolling|AxisDep: rhoN = " + support::shortest(f.torsional) + " m, rho = rho2 = " + support::shortest(f.rolling) +
+                " m (torque limits rho N_i per point, which add up over the points)"
+          : std::string("no rolling or spin friction rows (ODE's default)");
+  run.notes = "ODE " + std::string(dODE_VERSION) + " (double); step " + support::shortest(h) + " s; " + solver + "; " + softness +
+              ", surface layer " + support::shortest(options_.contact_surface_layer) + " m, max correcting velocity " +
               support::shortest(options_.contact_max_correcting_vel) +
-              " m/s (Gazebo classic's defaults); a contact joint per point (sphere-plane 1, flat cylinder-plane 4 on the rim), "
-              "dContactApprox1: friction pyramid mu = " +
-              support::shortest(f.k) + " along world x, y; " +
-              (f.torsional > 0.0 || f.rolling > 0.0
-                   ? "dContactRolling|AxisDep: rhoN = " + support::shortest(f.torsional) + " m, rho = rho2 = " + support::shortest(f.rolling) +
-                         " m (torque limits rho N_i per point, added over the points)"
-                   : std::string("no rolling/spin friction rows (ODE's default)")) +
-              "; normal_force = the last step's contact feedback (0 at t = 0 without settling); QuickStep row order shuffled with dRandSetSeed(" +
-              std::to_string(options_.seed) + ")";
+              " m/s (Gazebo classic's defaults); a contact joint per point (sphere-plane 1; cylinder-plane 4 on the rim when flat, "
+              "1-2 when tilted); dContactApprox1: friction pyramid mu = mu2 = " +
+              support::shortest(f.k) + " with edges along world x and y; " + spin +
+              "; normal_force: the contact feedback of the step that ended at the sample (at t = 0: the last settling step's, 0 "
+              "without settling); QuickStep's row shuffling seeded with dRandSetSeed(" +
+              std::to_string(options_.seed) + ") at each run";
   return run;
 }
 

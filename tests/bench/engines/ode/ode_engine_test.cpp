@@ -203,6 +203,50 @@ TEST(OdeEngine, CentreOfMassOffsetRocksAtTheClosedFormFrequency) {
   EXPECT_NEAR(w, w_exact, 0.03 * w_exact);
 }
 
+// A flat disk touches the plane at four points on its rim (ode/src/collision_cylinder_plane.cpp),
+// so spinning in place it already feels the sliding friction of a ring, k N a, with the defaults;
+// the spin rows of calibrated() add rhoN N on top (their per-point limits rhoN N_i add up to rhoN N).
+// Closed form: omega falls at (k a + rhoN) m g / C. The rim points slide along the friction
+// pyramid's edges (world x and y), where the pyramid is exact.
+TEST(OdeEngine, FlatDiskSpinsDownOnItsFourRimPoints) {
+  const auto engine = make_ode_engine();
+  const double a = 0.05, h = 0.01, m = 0.1, k = 0.3, w0 = 20.0;
+  RunSpec spec;
+  spec.body.shape = Body::Shape::disk;
+  spec.body.radius = a;
+  spec.body.thickness = h;
+  spec.body.mass = m;
+  const double C = 0.5 * m * a * a, A = 0.25 * m * a * a + m * h * h / 12.0;
+  spec.body.inertia = {A, A, C};
+  spec.start.omega = {0.0, 0.0, w0};
+  spec.numerics.settle_time = 0.02;  // into contact: the flat collider needs a positive depth
+  for (const bool calibrated : {false, true}) {
+    spec.friction = calibrated ? engine->calibrated(k, 2.0 / 3.0, a) : engine->defaults(k);
+    const double decel = (k * a + spec.friction.torsional) * m * g / C;
+    spec.t_end = 0.5 * w0 / decel;
+    const engines::Run run = engine->run(spec);
+    const double measured = -slope(run.samples, 0.0, spec.t_end, [](const Sample& s) { return s.omega[2]; });
+    std::printf("[ ODE ] disk spin deceleration (%s) %.5f 1/s^2, closed form (k a + rhoN) m g / C = %.5f 1/s^2\n",
+                calibrated ? "calibrated" : "defaults", measured, decel);
+    EXPECT_NEAR(measured, decel, 0.02 * decel);
+    EXPECT_NEAR(run.samples.back().normal_force, m * g, 0.01 * m * g);
+  }
+}
+
+// The exact LCP (dWorldStep) instead of QuickStep gives the same rolling, and says so.
+TEST(OdeEngine, ExactLcpOptionRollsAtFiveSevenths) {
+  OdeOptions options;
+  options.solver = OdeOptions::Solver::world;
+  const auto engine = make_ode_engine(options);
+  RunSpec spec = solid_sphere(0.05, 1.0, 0.2);
+  spec.start.v = {2.0, 0.0, 0.0};
+  spec.t_end = 0.5;
+  const engines::Run run = engine->run(spec);
+  EXPECT_NEAR(run.samples.back().v[0] / 2.0, 5.0 / 7.0, 0.02 * 5.0 / 7.0);
+  EXPECT_EQ(run.iterations, 0);
+  EXPECT_NE(run.notes.find("dWorldStep"), std::string::npos);
+}
+
 TEST(OdeEngine, BadInputThrowsNamingTheField) {
   const auto engine = make_ode_engine();
   RunSpec spec = solid_sphere(0.05, 1.0, 0.2);
