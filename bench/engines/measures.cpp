@@ -65,7 +65,11 @@ Measure puck(const Problem& p, const std::vector<Sample>& samples) {
   const double t_v = first_time_at_or_below(samples, horizontal_speed, 1e-3 * v0);
   const double t_w = first_time_at_or_below(samples, [](const Sample& s) { return std::abs(s.omega[2]); }, 1e-3 * w0);
   m.time = std::isnan(t_v) || std::isnan(t_w) ? kNaN : std::max(t_v, t_w);
-  m.detail = "v to 1e-3 of v0: " + s4(t_v) + "; ω to 1e-3 of ω0: " + s4(t_w);
+  std::string order = "";
+  if (!std::isnan(t_v) && !std::isnan(t_w)) {
+    order = std::abs(t_v - t_w) <= 0.01 * std::max(t_v, t_w) ? " (together)" : (t_v < t_w ? " (slip first)" : " (spin first)");
+  }
+  m.detail = "v to 1e-3 of v0: " + s4(t_v) + "; ω to 1e-3 of ω0: " + s4(t_w) + order;
   return m;
 }
 

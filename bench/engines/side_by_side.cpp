@@ -71,6 +71,15 @@ double relative_error(double value, double answer) {
   return std::isnan(value) ? std::numeric_limits<double>::infinity() : std::abs(value - answer) / std::abs(answer);
 }
 
+// A measure for the table: "never" for NaN, "→ ∞" and "→ 0" for the puck's ratio when one motion
+// stopped long before the other.
+std::string shown_value(double x) {
+  if (std::isnan(x)) return "never";
+  if (x > 1e6) return "→ ∞";
+  if (x < 1e-6) return "→ 0";
+  return g4(x);
+}
+
 std::string slug(std::string s) {
   for (char& c : s) {
     if (!std::isalnum(static_cast<unsigned char>(c)) && c != '.' && c != '-') c = '_';
@@ -318,8 +327,8 @@ int main(int argc, char** argv) {
         md << "| " << r.engine << " | " << r.setting.name << " | "
            << (r.engine == "frictionlab" ? "—" : g4(r.setting.friction.torsional)) << " | "
            << (r.engine == "frictionlab" ? "adaptive" : g4(r.run.timestep)) << " | "
-           << (std::isnan(r.measure.value) ? "never" : g4(r.measure.value)) << " | "
-           << (std::isinf(e) ? "—" : support::significant(100.0 * e, 2) + " %") << " | " << r.measure.detail
+           << shown_value(r.measure.value) << " | "
+           << (std::isinf(e) || e > 1e3 ? "—" : support::significant(100.0 * e, 2) + " %") << " | " << r.measure.detail
            << (r.ended.empty() ? "" : "; " + r.ended) << " | " << g4(r.cpu_s) << " |\n";
       }
     }
