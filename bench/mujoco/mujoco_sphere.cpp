@@ -2,11 +2,12 @@
 
 #include <mujoco/mujoco.h>
 
+#include <algorithm>
 #include <cmath>
-#include <memory>
-#include <sstream>
 #include <stdexcept>
 
+#include "bench/engines/mujoco/mujoco_engine.h"
+#include "bench/engines/mujoco/mujoco_world.h"
 #include "friction/support/checked_output.h"
 #include "friction/support/errors.h"
 #include "friction/support/number_format.h"
@@ -17,15 +18,6 @@ namespace {
 void require(bool ok, const char* key, double value, const char* rule) {
   if (!ok) throw support::invalid_value(key, value, rule);
 }
-
-struct ModelDeleter {
-  void operator()(mjModel* m) const { mj_deleteModel(m); }
-};
-struct DataDeleter {
-  void operator()(mjData* d) const { mj_deleteData(d); }
-};
-
-std::string n(double x) { return support::shortest(x); }
 
 }  // namespace
 
@@ -53,68 +45,70 @@ void SphereSpec::validate() const {
           "must be a finite number >= 0 s");
 }
 
+namespace {
+
+// The sphere as a run of the engines' MuJoCo adapter (bench/engines/mujoco), which writes and steps
+// every MuJoCo model of frictionlab: MuJoCo's friction "k torsional 0" at condim 4, the elliptic
+// cone, Newton with 100 iterations and tolerance 1e-12, Euler, solref (timeconst, dampratio),
+// MuJoCo's default solimp.
+engines::RunSpec run_spec(const SphereSpec& s) {
+  engines::RunSpec r;
+  r.body.shape = engines::Body::Shape::sphere;
+  r.body.radius = s.R;
+  r.body.mass = s.mass;
+  r.body.inertia = {s.A, s.A, s.C};
+  r.start.v = s.v0;
+  r.start.omega = s.omega0;  // the sphere starts unrotated: world = body frame
+  r.friction = {s.k, s.torsional, 0.0};
+  r.numerics.timestep = s.timestep;
+  r.numerics.g = s.g;
+  r.numerics.settle_time = s.settle_time;
+  r.t_end = s.t_end;
+  r.output_dt = s.output_dt;
+  return r;
+}
+
+engines::MujocoOptions mujoco_options(const SphereSpec& s) {
+  engines::MujocoOptions o;
+  o.condim = 4;
+  o.cone = engines::MujocoOptions::Cone::elliptic;
+  o.solref = {s.solref_timeconst, s.solref_dampratio};
+  o.impratio = s.impratio;
+  o.solver = engines::MujocoOptions::Solver::newton;
+  o.iterations = 100;
+  o.tolerance = 1e-12;
+  o.integrator = engines::MujocoOptions::Integrator::euler;
+  return o;
+}
+
+}  // namespace
+
 std::string mjcf(const SphereSpec& s) {
-  std::ostringstream x;
-  x << "<mujoco model=\"frictionlab-sphere\">\n"
-    << "  <!-- written by frictionlab's mujoco_side_by_side (docs/engines.md) -->\n"
-    << "  <option timestep=\"" << n(s.timestep) << "\" gravity=\"0 0 " << n(-s.g)
-    << "\" cone=\"elliptic\" impratio=\"" << n(s.impratio)
-    << "\" solver=\"Newton\" iterations=\"100\" tolerance=\"1e-12\" integrator=\"Euler\"/>\n"
-    << "  <default>\n"
-    << "    <geom condim=\"4\" friction=\"" << n(s.k) << ' ' << n(s.torsional) << " 0\" solref=\""
-    << n(s.solref_timeconst) << ' ' << n(s.solref_dampratio) << "\"/>\n"
-    << "  </default>\n"
-    << "  <worldbody>\n"
-    << "    <geom name=\"floor\" type=\"plane\" size=\"0 0 1\"/>\n"
-    << "    <body name=\"ball\" pos=\"0 0 " << n(s.R) << "\">\n"
-    << "      <joint name=\"free\" type=\"free\"/>\n"
-    << "      <inertial pos=\"0 0 0\" mass=\"" << n(s.mass) << "\" diaginertia=\"" << n(s.A) << ' ' << n(s.A) << ' '
-    << n(s.C) << "\"/>\n"
-    << "      <geom name=\"ball\" type=\"sphere\" size=\"" << n(s.R) << "\"/>\n"
-    << "    </body>\n"
-    << "  </worldbody>\n"
-    << "</mujoco>\n";
-  return x.str();
+  s.validate();
+  return engines::mujoco_mjcf(run_spec(s), mujoco_options(s));
 }
 
 std::string mujoco_version() { return mj_versionString(); }
 
 std::vector<Sample> run_sphere(const SphereSpec& spec, const std::filesystem::path& xml) {
   spec.validate();
-  support::write_file_atomically(xml, mjcf(spec));
-  char error[1000] = "";
-  std::unique_ptr<mjModel, ModelDeleter> m(mj_loadXML(xml.c_str(), nullptr, error, sizeof error));
-  if (!m) throw std::runtime_error("MuJoCo could not load " + xml.string() + ": " + error);
-  std::unique_ptr<mjData, DataDeleter> d(mj_makeData(m.get()));
-  if (!d) throw std::runtime_error("MuJoCo could not allocate its data");
-  const int ball = mj_name2id(m.get(), mjOBJ_BODY, "ball");
-
-  // Settle at rest: the soft contact finds its depth under m g.
-  for (double t = 0.0; t < spec.settle_time; t += spec.timestep) mj_step(m.get(), d.get());
-  // Launch: a free joint's qvel is (linear velocity in the world frame, angular velocity in the
-  // body frame); the settled sphere has not turned, but rotate anyway.
-  mj_forward(m.get(), d.get());
-  const mjtNum* R = d->xmat + 9 * ball;  // body to world, row-major
-  for (int i = 0; i < 3; ++i) {
-    d->qvel[i] = spec.v0[i];
-    d->qvel[3 + i] = R[i] * spec.omega0[0] + R[3 + i] * spec.omega0[1] + R[6 + i] * spec.omega0[2];
-  }
-  d->time = 0.0;
+  // Settles at rest (the soft contact finds its depth under m g), launches, restarts the clock.
+  engines::MujocoWorld world(run_spec(spec), mujoco_options(spec));
+  support::write_file_atomically(xml, world.mjcf());  // the model, kept for the reader
+  const mjModel* m = &world.model();
+  const mjData* d = &world.data();
+  const int ball = world.body();
 
   std::vector<Sample> out;
-  const auto steps = static_cast<long>(std::llround(spec.t_end / spec.timestep));
-  const auto every = std::max(1L, static_cast<long>(std::llround(spec.output_dt / spec.timestep)));
-  for (long step = 0; step <= steps; ++step) {
-    if (step % every == 0) {
-      mj_forward(m.get(), d.get());
-      mjtNum vel[6];
-      mj_objectVelocity(m.get(), d.get(), mjOBJ_BODY, ball, vel, 0);  // (angular, linear), world frame
+  for (;;) {
+    if (world.step_index() % world.steps_per_sample() == 0) {
+      world.evaluate();
+      const engines::Sample e = world.sample();  // v, omega at the centre (= centre of mass), world
       Sample s;
-      s.t = step * spec.timestep;
-      for (int i = 0; i < 3; ++i) {
-        s.omega[i] = vel[i];
-        s.v[i] = vel[3 + i];
-      }
+      s.t = e.t;
+      s.v = e.v;
+      s.omega = e.omega;
+      s.N = e.normal_force;
       // The material point of the sphere at the contact point: MuJoCo puts the contact midway
       // between the surfaces (depth/2 inside the sphere), and its friction acts there; out of
       // contact, the lowest point (0, 0, -R) from the centre. Slip: v + omega x r, horizontal.
@@ -128,9 +122,8 @@ std::vector<Sample> run_sphere(const SphereSpec& spec, const std::filesystem::pa
       s.Omega = s.omega[2];
       for (int c = 0; c < d->ncon; ++c) {
         mjtNum f[6];
-        mj_contactForce(m.get(), d.get(), c, f);
+        mj_contactForce(m, d, c, f);
         const mjContact& con = d->contact[c];
-        s.N += f[0];
         s.Ft = std::hypot(f[1], f[2]);
         s.tau += f[3] * con.frame[2];  // about +z: the contact frame's first axis is the normal
         s.depth = std::max(s.depth, -con.dist);
@@ -142,7 +135,8 @@ std::vector<Sample> run_sphere(const SphereSpec& spec, const std::filesystem::pa
       }
       out.push_back(s);
     }
-    if (step < steps) mj_step(m.get(), d.get());
+    if (world.step_index() >= world.steps()) break;
+    world.step();
   }
   return out;
 }

@@ -9,6 +9,8 @@
 // (timeconst, dampratio) and solimp at MuJoCo's defaults unless given (docs/engines.md §4 says what
 // that changes against a Hertz contact). The sphere is first let settle at rest for `settle_time`
 // (the soft contact finds its own depth), then given the velocities, and time restarts at 0.
+// The model is written, and run, by the engines' MuJoCo adapter (bench/engines/mujoco:
+// mujoco_mjcf, MujocoWorld), the one place frictionlab writes and steps a MuJoCo model.
 
 #include <array>
 #include <filesystem>
