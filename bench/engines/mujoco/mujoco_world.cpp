@@ -41,6 +41,19 @@ mjModel* load(const std::string& text) {
 
 std::string g(double x) { return support::significant(x, 4); }
 
+// MuJoCo's default warning handler prints "WARNING: ..." to standard output and appends it to
+// MUJOCO_LOG.TXT in the current folder (engine_util_errmem.c, mju_warning). The world reads the
+// warnings from mjData after each step and throws (check_warnings), so the handler only has to keep
+// quiet: installed once, for the process (mju_user_warning is a global of the library).
+void quiet_warning(const char* /*message*/) {}
+void install_quiet_warning_handler() {
+  static const bool installed = [] {
+    mju_user_warning = quiet_warning;
+    return true;
+  }();
+  (void)installed;
+}
+
 const char* cone_text(MujocoOptions::Cone c) {
   return c == MujocoOptions::Cone::elliptic ? "elliptic cone" : "pyramidal cone";
 }
@@ -63,6 +76,7 @@ const char* integrator_text(MujocoOptions::Integrator i) {
 
 MujocoWorld::MujocoWorld(const RunSpec& spec, const MujocoOptions& options)
     : spec_(spec), options_(options), mjcf_(mujoco_mjcf(spec, options)) {
+  install_quiet_warning_handler();
   model_ = load(mjcf_);
   data_ = mj_makeData(model_);
   if (!data_) {

@@ -67,9 +67,9 @@ TEST(EnginesSideBySide, TwoRunsGiveTheSameNumbersAndEveryBuiltEngineHasItsRows) 
   const Result b = run(args + (dir / "b").string());
   ASSERT_EQ(b.status, 0) << b.output;
   const auto na = numbers(dir / "a" / "engines.csv"), nb = numbers(dir / "b" / "engines.csv");
-  // frictionlab's row and three settings per engine, for two problems, and the header.
+  // frictionlab's row and four settings per engine, for two problems, and the header.
   const auto engines = frictionlab::engines::built_engines();
-  EXPECT_EQ(na.size(), 1 + 2 * (1 + 3 * engines.size()));
+  EXPECT_EQ(na.size(), 1 + 2 * (1 + 4 * engines.size()));
   EXPECT_EQ(na, nb);
   for (const auto& e : engines) EXPECT_NE(a.output.find(e->name() + " "), std::string::npos) << e->name();
   const bool all_built = frictionlab::engines::missing_engines().empty();
