@@ -166,9 +166,9 @@ void write_plot(const fs::path& dir, const Problem& p, const std::vector<const R
   const char* colours[] = {"black", "#D55E00", "#0072B2", "#009E73", "#CC79A7", "#E69F00", "#56B4E9"};
   gp << "# " << stem << ".png from " << stem << ".dat, written by engines_side_by_side.\n"
      << "# Redraw: cd into this folder, then `gnuplot " << stem << ".gp`.\n"
-     << "set terminal pngcairo size 1000,560 enhanced font 'Sans,11'\nset output '" << stem << ".png'\n"
+     << "set terminal pngcairo size 1000,560 enhanced font 'Sans,11'\nset output " << support::gnuplot_quoted(stem + ".png") << '\n'
      << "set encoding utf8\nset grid\nset key outside right top\nset xlabel 't (s)'\n"
-     << "set ylabel '" << plotted_label(p) << "'\n"
+     << "set ylabel " << support::gnuplot_quoted(plotted_label(p)) << '\n'
      << "set title " << support::gnuplot_text(p.title + ": " + p.quantity + ", answer " + g4(p.answer)) << '\n';
   if (p.id == "puck") gp << "set logscale y\nset yrange [0.1:100]\nset xrange [0:0.8]\n";
   gp << "plot ";
@@ -181,7 +181,7 @@ void write_plot(const fs::path& dir, const Problem& p, const std::vector<const R
         std::find(engines.begin(), engines.end(), rows[b]->engine) - engines.begin());
     const bool ref = rows[b]->engine == "frictionlab";
     const bool dashed = rows[b]->setting.name == "defaults";
-    gp << (b ? ", \\\n     " : "") << "'" << stem << ".dat' index " << b << " using 1:2 with lines lw " << (ref ? 3 : 2)
+    gp << (b ? ", \\\n     " : "") << support::gnuplot_quoted(stem + ".dat") << " index " << b << " using 1:2 with lines lw " << (ref ? 3 : 2)
        << " dt " << (dashed ? 2 : 1) << " lc rgb '" << colours[colour % 7] << "' title "
        << support::gnuplot_text(rows[b]->engine + ", " + rows[b]->setting.name);
   }

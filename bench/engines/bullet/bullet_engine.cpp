@@ -58,11 +58,7 @@ void require_finite(const std::array<double, N>& values, const char* key, const 
 
 std::string n(double x) { return support::shortest(x); }
 // Four significant digits, for the notes' derived numbers.
-std::string g4(double x) {
-  std::array<char, 32> text{};
-  std::snprintf(text.data(), text.size(), "%.4g", x);
-  return text.data();
-}
+std::string g4(double x) { return support::significant(x, 4); }
 
 btVector3 to_bt(const std::array<double, 3>& v) {
   return {static_cast<btScalar>(v[0]), static_cast<btScalar>(v[1]), static_cast<btScalar>(v[2])};
