@@ -10,11 +10,11 @@
 // loop; a Omega beyond the doubles or below the normal ones, where the slip ratio takes two
 // divisions) are evaluated there, one by one. The others fill a block in structure-of-arrays form,
 // on which one loop computes the geometry (a square root, E's polynomials, seven cubics) and the
-// law (three square roots, two divisions) of every lane without a branch: the limits (U = 0,
-// Omega = 0) are computed beside the general formula and selected. GCC vectorises that loop at
-// the baseline x86-64 instruction set (SSE2, two doubles a lane) given -fno-math-errno (for
-// sqrtpd), which friction/CMakeLists.txt sets for this library; -ffp-contract=off there keeps
-// every build (-march=native too) from fusing a multiply-add in one path and not the other.
+// general formula (three square roots, two divisions) of every lane, and a second selects the
+// limits (U = 0, Omega = 0) and scales, without a branch. GCC vectorises both at the baseline
+// x86-64 instruction set (SSE2, two doubles a lane) given -fno-math-errno (for sqrtpd), which
+// friction/CMakeLists.txt sets for this library; -ffp-contract=off there keeps every build
+// (-march=native too) from fusing a multiply-add in one path and not the other.
 
 #include <span>
 
