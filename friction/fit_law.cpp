@@ -1,6 +1,7 @@
 #include "friction/fit_law.h"
 
 #include "friction/exact_law.h"
+#include "friction/fit_batch.h"
 #include "friction/standalone/fit_law.h"
 
 namespace frictionlab::friction {
@@ -30,11 +31,12 @@ LawPromises FitLaw::promises() const {
   return p;
 }
 
-FrictionForces FitLaw::do_evaluate(const ContactInput& in) const {
-  const PatchAngle::CosSin axis = in.psi.cos_sin();
-  const frictionlab_fit::Geometry g = frictionlab_fit::make_geometry(in.b / in.a, standalone_pressure(pressure_));
-  const frictionlab_fit::Forces f = frictionlab_fit::evaluate(g, in.U, in.Omega, in.a, axis.c, axis.s, in.N, in.k);
-  return {f.F1, f.F2, f.M};
+FrictionForces FitLaw::do_evaluate(const ContactInput& in) const { return fit_contact(standalone_pressure(pressure_), in); }
+
+// Several contacts at once across SIMD lanes, each bit for bit as do_evaluate (friction/fit_batch.h).
+// fit rejects no valid contact: nothing to report.
+void FitLaw::do_evaluate_batch(std::span<const ContactInput> in, std::span<FrictionForces> out) const {
+  fit_contacts(standalone_pressure(pressure_), in, out);
 }
 
 }  // namespace frictionlab::friction

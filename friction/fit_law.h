@@ -18,6 +18,7 @@
 // Limits, each exact: N = 0 or k = 0: zero. U = Omega = 0: zero (the law is indeterminate there,
 // as `exact`). Omega = 0: F1 = kN, F2 = M = 0. U = 0: F = 0, M = c_p kNa E(e) sign(Omega).
 
+#include <span>
 #include <string_view>
 #include <vector>
 
@@ -53,6 +54,7 @@ class FitLaw final : public FrictionLaw {
 
  private:
   [[nodiscard]] FrictionForces do_evaluate(const ContactInput& in) const override;
+  void do_evaluate_batch(std::span<const ContactInput> in, std::span<FrictionForces> out) const override;
   Pressure pressure_;
 };
 

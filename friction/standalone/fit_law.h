@@ -162,30 +162,71 @@ struct Geometry {
   double c[5];  ///< the fitted coefficients at this mu
 };
 
-/// The geometry of a patch with axis ratio mu = b/a in (0, 1] (fitted on [0.05, 1]).
-inline Geometry make_geometry(double mu, Pressure pressure) {
-  const int p = static_cast<int>(pressure);
+namespace detail {
+
+/// (q0 + q1 z + q2 z^2 + q3 z^3)^2.
+inline double squared_cubic(const double* q, double z) {
+  const double root = q[0] + z * (q[1] + z * (q[2] + z * q[3]));
+  return root * root;
+}
+
+/// The geometry of a patch with axis ratio mu and E(e) = e_of_mu, pressure index p: make_geometry
+/// without the choice of E's route, branch-free, so that a loop over many contacts vectorises
+/// (frictionlab's friction/fit_batch.cpp evaluates through it, bit for bit as make_geometry).
+inline Geometry geometry_from_e(double mu, double e_of_mu, int p) {
   Geometry g;
   const double z = std::sqrt(mu);
   const double t = 1.0 - z;
-  double square[7];
-  for (int r = 0; r < 7; ++r) {
-    const double* q = detail::kQ[p][r];
-    const double root = q[0] + z * (q[1] + z * (q[2] + z * q[3]));
-    square[r] = root * root;
-  }
-  g.c[0] = square[0] + t * square[2];
-  g.c[1] = 2.0 * square[0] + t * square[3];
-  g.c[2] = square[0] + t * square[4];
-  g.c[3] = square[1] + t * square[5];
-  g.c[4] = square[1] + t * square[6];
+  // The squares of the seven cubics, written out rather than looped over: a loop inside would keep
+  // a loop over contacts from vectorising.
+  const double A = squared_cubic(kQ[p][0], z), C = squared_cubic(kQ[p][1], z);
+  const double B0 = squared_cubic(kQ[p][2], z), B1 = squared_cubic(kQ[p][3], z), B2 = squared_cubic(kQ[p][4], z);
+  const double B3 = squared_cubic(kQ[p][5], z), B4 = squared_cubic(kQ[p][6], z);
+  g.c[0] = A + t * B0;
+  g.c[1] = 2.0 * A + t * B1;
+  g.c[2] = A + t * B2;
+  g.c[3] = C + t * B3;
+  g.c[4] = C + t * B4;
   g.mu2 = mu * mu;
-  g.m2 = detail::kSecondMoment[p];
-  g.M0 = detail::kPureSpinFactor[p] * elliptic_e(mu);
+  g.m2 = kSecondMoment[p];
+  g.M0 = kPureSpinFactor[p] * e_of_mu;
   const double M2 = g.M0 * g.M0;
   const double M4 = M2 * M2;
   g.M8 = M4 * M4;
   return g;
+}
+
+/// The law per kN and kNa of a moving contact (unit_forces below, past its limits): un > 0 and
+/// wn != 0 the slip and spin speeds scaled so that the larger is 1. Branch-free, for the same
+/// reason as geometry_from_e.
+inline Forces moving_unit_forces(const Geometry& g, double un, double wn, double cos_psi, double sin_psi) {
+  const double ux = un * cos_psi, uy = -un * sin_psi;
+  const double X = ux * ux, Y = uy * uy, W = wn * wn, S = X + Y;
+  const double J = g.m2 * (X + g.mu2 * Y);
+  const double W2 = W * W, W3 = W2 * W, S2 = S * S;
+  const double A2 = g.c[0] * X * X + g.c[1] * X * Y + g.c[2] * Y * Y;  // the W^2 block
+  const double A3 = g.c[3] * X + g.c[4] * Y;                           // the W^3 block
+  const double P = S2 * S2 + 4.0 * W * S2 * J + W2 * A2 + W3 * A3 + g.M8 * W2 * W2;
+  const double PX = 4.0 * S2 * S + 4.0 * W * (2.0 * S * J + S2 * g.m2) + W2 * (2.0 * g.c[0] * X + g.c[1] * Y) +
+                    W3 * g.c[3];
+  const double PY = 4.0 * S2 * S + 4.0 * W * (2.0 * S * J + S2 * g.m2 * g.mu2) +
+                    W2 * (g.c[1] * X + 2.0 * g.c[2] * Y) + W3 * g.c[4];
+  const double PW = 4.0 * S2 * J + 2.0 * W * A2 + 3.0 * W2 * A3 + 4.0 * g.M8 * W3;
+  const double D = std::sqrt(std::sqrt(std::sqrt(P)));  // P^(1/8)
+  const double f = D / (4.0 * P);
+  const double Gx = f * ux * PX, Gy = f * uy * PY;  // along the major and the minor axis
+  Forces out;
+  out.F1 = Gx * cos_psi - Gy * sin_psi;
+  out.F2 = Gx * sin_psi + Gy * cos_psi;
+  out.M = f * wn * PW;
+  return out;
+}
+
+}  // namespace detail
+
+/// The geometry of a patch with axis ratio mu = b/a in (0, 1] (fitted on [0.05, 1]).
+inline Geometry make_geometry(double mu, Pressure pressure) {
+  return detail::geometry_from_e(mu, elliptic_e(mu), static_cast<int>(pressure));
 }
 
 /// The law per kN and kNa: u >= 0 the slip speed and w the signed spin speed a Omega, in any common
@@ -216,25 +257,7 @@ inline Forces unit_forces(const Geometry& g, double u, double w, double cos_psi,
     un = u / largest;
     wn = w / largest;
   }
-  const double ux = un * cos_psi, uy = -un * sin_psi;
-  const double X = ux * ux, Y = uy * uy, W = wn * wn, S = X + Y;
-  const double J = g.m2 * (X + g.mu2 * Y);
-  const double W2 = W * W, W3 = W2 * W, S2 = S * S;
-  const double A2 = g.c[0] * X * X + g.c[1] * X * Y + g.c[2] * Y * Y;  // the W^2 block
-  const double A3 = g.c[3] * X + g.c[4] * Y;                           // the W^3 block
-  const double P = S2 * S2 + 4.0 * W * S2 * J + W2 * A2 + W3 * A3 + g.M8 * W2 * W2;
-  const double PX = 4.0 * S2 * S + 4.0 * W * (2.0 * S * J + S2 * g.m2) + W2 * (2.0 * g.c[0] * X + g.c[1] * Y) +
-                    W3 * g.c[3];
-  const double PY = 4.0 * S2 * S + 4.0 * W * (2.0 * S * J + S2 * g.m2 * g.mu2) +
-                    W2 * (g.c[1] * X + 2.0 * g.c[2] * Y) + W3 * g.c[4];
-  const double PW = 4.0 * S2 * J + 2.0 * W * A2 + 3.0 * W2 * A3 + 4.0 * g.M8 * W3;
-  const double D = std::sqrt(std::sqrt(std::sqrt(P)));  // P^(1/8)
-  const double f = D / (4.0 * P);
-  const double Gx = f * ux * PX, Gy = f * uy * PY;  // along the major and the minor axis
-  out.F1 = Gx * cos_psi - Gy * sin_psi;
-  out.F2 = Gx * sin_psi + Gy * cos_psi;
-  out.M = f * wn * PW;
-  return out;
+  return detail::moving_unit_forces(g, un, wn, cos_psi, sin_psi);
 }
 
 /// The law in SI units: U >= 0 slip speed (m/s), Omega spin (1/s), a the major semi-axis (m),
