@@ -56,8 +56,8 @@ endfunction()
 
 # frictionlab_use_precompiled_headers(DIR...): every static library and executable of the project in
 # those directories reuses the matching precompiled header. Test executables (they link GoogleTest)
-# get the one with gtest.h. Targets with their own compile flags (the Python module, MuJoCo) are
-# left out: a header precompiled with other flags would be rejected anyway.
+# get the one with gtest.h. Targets with their own compile flags (the Python module, MuJoCo, `fit`
+# with -fno-math-errno) are left out: a header precompiled with other flags would be rejected anyway.
 function(frictionlab_use_precompiled_headers)
   if(NOT FRICTIONLAB_PRECOMPILED_HEADERS)
     return()
@@ -81,7 +81,7 @@ function(frictionlab_use_precompiled_headers)
   foreach(target IN LISTS targets)
     get_target_property(type ${target} TYPE)
     get_target_property(imported ${target} IMPORTED)
-    if(imported OR NOT type MATCHES "^(STATIC_LIBRARY|EXECUTABLE)$" OR target MATCHES "mujoco|python")
+    if(imported OR NOT type MATCHES "^(STATIC_LIBRARY|EXECUTABLE)$" OR target MATCHES "mujoco|python|friction_fit")
       continue()
     endif()
     get_target_property(links ${target} LINK_LIBRARIES)
