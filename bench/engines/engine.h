@@ -74,6 +74,13 @@ struct Run {
   std::string notes;      ///< the settings a reader needs (cone, solver, softness, the rolling-friction quirk)
 };
 
+/// The rules every engine's run obeys (std::invalid_argument naming the field, its value and the
+/// rule): positive sizes, mass and principal moments (with the triangle inequality), the centre of
+/// mass inside the shape, a unit start quaternion, finite velocities, friction coefficients >= 0,
+/// a time step >= 0 (0: `default_timestep`, s), settle_time, output_dt and t_end within 1e9 steps.
+/// An adapter adds its engine's own rules.
+void validate(const RunSpec& spec, double default_timestep);
+
 /// An engine behind one interface.
 class Engine {
  public:

@@ -43,17 +43,9 @@ constexpr double kSpinEnablingRolling = static_cast<double>(std::numeric_limits<
 // (btRigidBody::integrateVelocities, which would clamp omega at (pi/2)/step, is not called by
 // btDiscreteDynamicsWorld in 3.24.)
 constexpr double kQuarterPi = 0.78539816339744830962;
-constexpr double kMaxSteps = 1e9;
 
 void require(bool ok, const char* key, double value, const char* rule) {
   if (!ok) throw support::invalid_value(key, value, rule);
-}
-
-template <std::size_t N>
-void require_finite(const std::array<double, N>& values, const char* key, const char* rule) {
-  for (const double x : values) {
-    if (!std::isfinite(x)) throw support::invalid_value(key, std::span<const double>(values), rule);
-  }
 }
 
 std::string n(double x) { return support::shortest(x); }
@@ -68,54 +60,23 @@ std::array<double, 3> from_bt(const btVector3& v) {
 }
 
 void validate(const RunSpec& s, const BulletOptions& options) {
+  engines::validate(s, kDefaultTimestep);  // the rules of every engine (bench/engines/engine.h)
   const Body& b = s.body;
-  require(std::isfinite(b.radius) && b.radius > 0.0, "body.radius", b.radius, "must be a finite number > 0 m");
   if (b.shape == Body::Shape::disk) {
-    require(std::isfinite(b.thickness) && b.thickness > 0.0, "body.thickness", b.thickness,
-            "must be a finite number > 0 m for a disk");
     // The cylinder's inner (implicit) half extents are the outer ones less the margin.
     require(options.disk_margin < std::min(b.radius, b.thickness / 2), "BulletOptions::disk_margin",
             options.disk_margin, "must be below the disk's smallest half extent (radius, thickness/2)");
   }
-  require(std::isfinite(b.mass) && b.mass > 0.0, "body.mass", b.mass, "must be a finite number > 0 kg");
-  for (const double x : b.inertia) {
-    if (!(std::isfinite(x) && x > 0.0)) {
-      throw support::invalid_value("body.inertia", std::span<const double>(b.inertia),
-                                   "each principal moment must be a finite number > 0 kg m^2");
-    }
-  }
-  require_finite(b.com, "body.com", "must be finite (m)");
-  require_finite(s.start.orientation, "start.orientation", "must be finite");
-  const auto& q = s.start.orientation;
-  const double norm = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
-  if (std::abs(norm - 1.0) > 1e-6) {
-    throw support::invalid_value("start.orientation", std::span<const double>(q),
-                                 "must be a unit quaternion (w, x, y, z) within 1e-6");
-  }
-  require_finite(s.start.v, "start.v", "must be finite (m/s)");
-  require_finite(s.start.omega, "start.omega", "must be finite (1/s)");
   const Friction& f = s.friction;
-  require(std::isfinite(f.k) && f.k >= 0.0 && f.k <= kMaxCombinedFriction, "friction.k", f.k,
-          "must be a finite number in [0, 10] (Bullet clamps combined friction at 10)");
-  require(std::isfinite(f.torsional) && f.torsional >= 0.0 && f.torsional <= kMaxCombinedFriction,
-          "friction.torsional", f.torsional, "must be a finite number in [0, 10] m (Bullet clamps it at 10)");
-  require(std::isfinite(f.rolling) && f.rolling >= 0.0 && f.rolling <= kMaxCombinedFriction, "friction.rolling",
-          f.rolling, "must be a finite number in [0, 10] m (Bullet clamps it at 10)");
-  const Numerics& nu = s.numerics;
+  require(f.k <= kMaxCombinedFriction, "friction.k", f.k, "must be a finite number in [0, 10] (Bullet clamps combined friction at 10)");
+  require(f.torsional <= kMaxCombinedFriction, "friction.torsional", f.torsional,
+          "must be a finite number in [0, 10] m (Bullet clamps it at 10)");
+  require(f.rolling <= kMaxCombinedFriction, "friction.rolling", f.rolling,
+          "must be a finite number in [0, 10] m (Bullet clamps it at 10)");
   // stepSimulation(t, 0) takes no step at all if btFuzzyZero(t), |t| < SIMD_EPSILON.
-  require(std::isfinite(nu.timestep) && (nu.timestep == 0.0 || static_cast<btScalar>(nu.timestep) > SIMD_EPSILON),
-          "numerics.timestep", nu.timestep,
+  const Numerics& nu = s.numerics;
+  require(nu.timestep == 0.0 || static_cast<btScalar>(nu.timestep) > SIMD_EPSILON, "numerics.timestep", nu.timestep,
           "must be 0 (Bullet's 1/60 s) or a finite number above SIMD_EPSILON s (Bullet skips shorter steps)");
-  require(nu.iterations >= 0, "numerics.iterations", nu.iterations, "must be >= 0 (0: Bullet's 10)");
-  require(std::isfinite(nu.g) && nu.g >= 0.0, "numerics.g", nu.g, "must be a finite number >= 0 m/s^2");
-  require(std::isfinite(nu.settle_time) && nu.settle_time >= 0.0, "numerics.settle_time", nu.settle_time,
-          "must be a finite number >= 0 s");
-  const double dt = nu.timestep > 0.0 ? nu.timestep : kDefaultTimestep;
-  require(nu.settle_time / dt <= kMaxSteps, "numerics.settle_time", nu.settle_time, "must be at most 1e9 time steps");
-  require(std::isfinite(s.output_dt) && s.output_dt > 0.0, "output_dt", s.output_dt,
-          "must be a finite number > 0 s (rounded to a multiple of the time step, at least one step)");
-  require(std::isfinite(s.t_end) && s.t_end >= 0.0 && s.t_end / dt <= kMaxSteps, "t_end", s.t_end,
-          "must be a finite number >= 0 s and at most 1e9 time steps");
 }
 
 // One world with the plane and the body, owned here, torn down in the order Bullet needs (bodies

@@ -21,11 +21,6 @@ using Vec3 = std::array<double, 3>;
 void require(bool ok, const char* key, double value, const char* rule) {
   if (!ok) throw support::invalid_value(key, value, rule);
 }
-void require_all_finite(const double* x, std::size_t n, const char* key, const char* rule) {
-  for (std::size_t i = 0; i < n; ++i) {
-    if (!std::isfinite(x[i])) throw support::invalid_value(key, std::span<const double>(x, n), rule);
-  }
-}
 
 std::string n(double x) { return support::shortest(x); }
 
@@ -115,55 +110,8 @@ void MujocoOptions::validate() const {
 namespace mujoco_detail {
 
 void validate(const RunSpec& s) {
-  const Body& b = s.body;
-  require(std::isfinite(b.radius) && b.radius > 0.0, "body.radius", b.radius, "must be a finite number > 0 m");
-  if (b.shape == Body::Shape::disk) {
-    require(std::isfinite(b.thickness) && b.thickness > 0.0, "body.thickness", b.thickness,
-            "a disk is a MuJoCo cylinder, whose half height must be a finite number > 0 m");
-  }
-  require(std::isfinite(b.mass) && b.mass > 0.0, "body.mass", b.mass, "must be a finite number > 0 kg");
-  const auto& J = b.inertia;
-  const char* inertia_rule =
-      "must be finite numbers > 0 kg m^2 with each at most the sum of the other two (MuJoCo's compiler "
-      "rule A + B >= C, src/user/user_objects.cc)";
-  for (const double x : J) {
-    if (!(std::isfinite(x) && x > 0.0)) throw support::invalid_value("body.inertia", J, inertia_rule);
-  }
-  if (J[0] + J[1] < J[2] || J[0] + J[2] < J[1] || J[1] + J[2] < J[0]) {
-    throw support::invalid_value("body.inertia", J, inertia_rule);
-  }
-  require_all_finite(b.com.data(), 3, "body.com", "must be finite (m, body frame)");
-
-  const auto& q = s.start.orientation;
-  require_all_finite(q.data(), 4, "start.orientation", "must be a finite unit quaternion (w, x, y, z)");
-  const double norm = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
-  if (std::abs(norm - 1.0) > 1e-6) {
-    throw support::invalid_value("start.orientation", q, "must be a unit quaternion (norm 1 within 1e-6)");
-  }
-  require_all_finite(s.start.v.data(), 3, "start.v", "must be finite (m/s)");
-  require_all_finite(s.start.omega.data(), 3, "start.omega", "must be finite (1/s)");
-
-  require(std::isfinite(s.friction.k) && s.friction.k >= 0.0, "friction.k", s.friction.k,
-          "must be a finite number >= 0");
-  require(std::isfinite(s.friction.torsional) && s.friction.torsional >= 0.0, "friction.torsional",
-          s.friction.torsional, "must be a finite number >= 0 m");
-  require(std::isfinite(s.friction.rolling) && s.friction.rolling >= 0.0, "friction.rolling", s.friction.rolling,
-          "must be a finite number >= 0 m");
-
-  const auto& num = s.numerics;
-  require(std::isfinite(num.timestep) && num.timestep >= 0.0, "numerics.timestep", num.timestep,
-          "must be a finite number > 0 s, or 0 for MuJoCo's default 0.002 s");
-  if (num.iterations < 0) {
-    throw support::invalid_value("numerics.iterations", static_cast<long long>(num.iterations),
-                                 "must be >= 1, or 0 for the options' (MuJoCo's default 100)");
-  }
-  require(std::isfinite(num.g) && num.g > 0.0, "numerics.g", num.g, "must be a finite number > 0 m/s^2");
-  const double dt = timestep(s);
-  require(std::isfinite(num.settle_time) && num.settle_time >= 0.0 && num.settle_time / dt <= 1e9,
-          "numerics.settle_time", num.settle_time, "must be a finite number >= 0 s and at most 1e9 time steps");
-  require(std::isfinite(s.output_dt) && s.output_dt > 0.0, "output_dt", s.output_dt, "must be a finite number > 0 s");
-  require(std::isfinite(s.t_end) && s.t_end >= 0.0 && s.t_end / dt <= 1e9, "t_end", s.t_end,
-          "must be a finite number >= 0 s and at most 1e9 time steps");
+  engines::validate(s, mujoco_default_timestep);  // the rules of every engine (bench/engines/engine.h)
+  require(s.numerics.g > 0.0, "numerics.g", s.numerics.g, "must be a finite number > 0 m/s^2");
 }
 
 double timestep(const RunSpec& spec) {

@@ -116,12 +116,6 @@ void require_positive(const char* key, double value) {
 void require_non_negative(const char* key, double value) {
   if (!(std::isfinite(value) && value >= 0.0)) throw support::invalid_value(key, value, "it must be finite and >= 0");
 }
-template <std::size_t N>
-void require_finite(const char* key, const std::array<double, N>& values) {
-  for (const double x : values) {
-    if (!std::isfinite(x)) throw support::invalid_value(key, std::span<const double>(values), "every component must be finite");
-  }
-}
 
 void validate_options(const OdeOptions& o) {
   require_positive("ode.timestep", o.timestep);
@@ -139,50 +133,9 @@ void validate_options(const OdeOptions& o) {
   }
 }
 
-double norm(const Vec3& v) { return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); }
-
-void validate_spec(const RunSpec& s) {
-  const Body& b = s.body;
-  require_positive("body.radius", b.radius);
-  if (b.shape == Body::Shape::disk) require_positive("body.thickness", b.thickness);
-  require_positive("body.mass", b.mass);
-  for (const double i : b.inertia) {
-    if (!(std::isfinite(i) && i > 0.0)) {
-      throw support::invalid_value("body.inertia", std::span<const double>(b.inertia), "every moment must be finite and > 0");
-    }
-  }
-  // A rigid body's principal moments obey the triangle inequality (ODE's dMassCheck asks the
-  // inertia to be positive definite; a body breaking it is not a body).
-  const auto& I = b.inertia;
-  const double slack = 1e-9 * (I[0] + I[1] + I[2]);
-  if (I[0] > I[1] + I[2] + slack || I[1] > I[0] + I[2] + slack || I[2] > I[0] + I[1] + slack) {
-    throw support::invalid_value("body.inertia", std::span<const double>(b.inertia),
-                                 "the principal moments must satisfy the triangle inequality (each <= the sum of the others)");
-  }
-  require_finite("body.com", b.com);
-  if (b.shape == Body::Shape::sphere ? !(norm(b.com) < b.radius)
-                                     : !(std::hypot(b.com[0], b.com[1]) < b.radius && std::abs(b.com[2]) < 0.5 * b.thickness)) {
-    throw support::invalid_value("body.com", std::span<const double>(b.com), "the centre of mass must lie inside the shape");
-  }
-  require_finite("start.orientation", s.start.orientation);
-  const auto& q = s.start.orientation;
-  const double qn = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
-  if (std::abs(qn - 1.0) > 1e-6) {
-    throw support::invalid_value("start.orientation", std::span<const double>(q), "it must be a unit quaternion (w, x, y, z)");
-  }
-  require_finite("start.v", s.start.v);
-  require_finite("start.omega", s.start.omega);
-  require_non_negative("friction.k", s.friction.k);
-  require_non_negative("friction.torsional", s.friction.torsional);
-  require_non_negative("friction.rolling", s.friction.rolling);
-  require_non_negative("numerics.timestep", s.numerics.timestep);  // 0: the default step
-  if (s.numerics.iterations < 0) {
-    throw support::invalid_value("numerics.iterations", static_cast<long long>(s.numerics.iterations), "it must be >= 0 (0: the default)");
-  }
-  require_non_negative("numerics.g", s.numerics.g);
-  require_non_negative("numerics.settle_time", s.numerics.settle_time);
+void validate_spec(const RunSpec& s, double default_timestep) {
+  engines::validate(s, default_timestep);  // the rules of every engine (bench/engines/engine.h)
   require_positive("t_end", s.t_end);
-  require_positive("output_dt", s.output_dt);
 }
 
 // Steps in `duration` at step h, rounded to the nearest (the interface's "a multiple of the time
@@ -267,7 +220,7 @@ class OdeEngine final : public Engine {
   [[nodiscard]] Friction calibrated(double k, double c, double a) const override { return Friction{k, c * k * a, 0.0}; }
 
   [[nodiscard]] Run run(const RunSpec& spec) const override {
-    validate_spec(spec);
+    validate_spec(spec, options_.timestep);
     const std::lock_guard<std::mutex> lock(ode_mutex());
     ensure_ode_ready_for_this_thread();
     return simulate(spec);
