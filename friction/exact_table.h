@@ -46,6 +46,16 @@ struct ExactTableValue {
   double m;   ///< M / M0, M0 = pure_spin_moment()
 };
 
+/// Where ExactTable::at reads the table for one ICR (steps 5-7 of docs/exact-table.md): the cell's
+/// first coefficient row, its place in the cell on each axis, and the factors (fx, fy) of G. The
+/// split lets a batch locate many ICRs before it sums any (friction/exact_table_batch.h).
+struct ExactTableCell {
+  const double* corner;   ///< coefficient [t][xi][zeta][0] of the cell's first node on each axis
+  std::size_t t_stride;   ///< doubles between t planes of the cell's block
+  double tau_t, tau_x, tau_z;  ///< place in the cell, in [0, 1], along t, xi, zeta
+  double fx, fy;          ///< Gx = fx u, Gy = fy v
+};
+
 /// The B-spline table of the exact law for one pressure model. Immutable once built; safe to read
 /// concurrently.
 class ExactTable {
@@ -72,8 +82,24 @@ class ExactTable {
   [[nodiscard]] double pure_spin_moment(double mu, double ln_mu) const;
 
   /// (Gx, Gy, m) at the ICR (Xt, Yt) (patch axes, units of a; finite, |Xt|, |Yt| <= 1e8) for
-  /// mu in [0.01, 1], ln_mu = ln(mu). No allocation.
+  /// mu in [0.01, 1], ln_mu = ln(mu). No allocation. It is contract(locate(...), weights of the
+  /// cell's taus by quintic_weights and cubic_weights, friction/uniform_bspline.h).
   [[nodiscard]] ExactTableValue at(double Xt, double Yt, double mu, double ln_mu) const;
+
+  /// Steps 5-7 of at(): the cell of the ICR (Xt, Yt) at axis ratio mu, ln_mu = ln(mu).
+  [[nodiscard]] ExactTableCell locate(double Xt, double Yt, double mu, double ln_mu) const;
+  /// Step 8 of at(): the tensor sum of the cell's 6 x 4 x 4 coefficients with the quintic weights
+  /// `wt` (t) and the cubic weights `wx` (xi), `wz` (zeta) of its taus, times (fx, fy).
+  [[nodiscard]] static ExactTableValue contract(const ExactTableCell& cell, const double wt[6], const double wx[4],
+                                                const double wz[4]);
+  /// True if the processor has AVX, for contract_pair_wide() (checked once).
+  [[nodiscard]] static bool has_wide_sum();
+  /// contract() of two cells with the weights of their taus, the same values bit for bit, both
+  /// sums at once in 4-lane AVX vectors; only where has_wide_sum() (two contract()s elsewhere than
+  /// on x86). The batch uses it (friction/exact_table_batch.h); a single contact keeps contract(),
+  /// SSE2 on any x86-64.
+  static void contract_pair_wide(const ExactTableCell& first, const ExactTableCell& second,
+                                 ExactTableValue& first_value, ExactTableValue& second_value);
 
   /// Bytes of coefficients (5,774,016).
   [[nodiscard]] std::size_t bytes() const { return (inside_.size() + outside_.size()) * sizeof(double); }
