@@ -10,7 +10,6 @@
 
 #include <gtest/gtest.h>
 
-#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <initializer_list>
@@ -18,55 +17,32 @@
 #include <numbers>
 #include <random>
 #include <span>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "friction/fit_law.h"
 #include "friction/law.h"
+#include "tests/friction/batch_checks.h"
 #include "friction/pressure.h"
 
 namespace frictionlab::friction {
 namespace {
 
+using testing::describe;
+using testing::expect_batch_is_per_contact;
+using testing::same_bits;
+
 constexpr double kPi = std::numbers::pi;
 constexpr double kSubnormal = std::numeric_limits<double>::denorm_min();
 constexpr double kSmallestNormal = std::numeric_limits<double>::min();
 
-const Pressure kPressures[] = {Pressure::hertz, Pressure::uniform, Pressure::punch};
-
-bool same_bits(double x, double y) { return std::bit_cast<std::uint64_t>(x) == std::bit_cast<std::uint64_t>(y); }
-
-std::string describe(const ContactInput& c) {
-  std::ostringstream s;
-  s.precision(17);
-  const auto [cos_psi, sin_psi] = c.psi.cos_sin();
-  s << "U " << c.U << " Omega " << c.Omega << " a " << c.a << " b " << c.b << " (cos psi, sin psi) (" << cos_psi << ", "
-    << sin_psi << ")" << (c.psi.is_direction() ? " given" : " from an angle") << " N " << c.N << " k " << c.k;
-  return s.str();
-}
-
-// Each result of the batch is the per-contact evaluation's, bit for bit.
-void expect_batch_is_per_contact(const FitLaw& law, const std::vector<ContactInput>& contacts) {
-  std::vector<FrictionForces> out(contacts.size(), FrictionForces{-1.0, -1.0, -1.0});
-  law.evaluate(std::span<const ContactInput>(contacts), std::span<FrictionForces>(out));
-  int reported = 0;
-  for (std::size_t i = 0; i < contacts.size() && reported < 10; ++i) {
-    const FrictionForces one = law.evaluate(contacts[i]);
-    const bool same = same_bits(out[i].F1, one.F1) && same_bits(out[i].F2, one.F2) && same_bits(out[i].M, one.M);
-    if (!same) ++reported;
-    EXPECT_TRUE(same) << "contact " << i << " of " << contacts.size() << ": " << describe(contacts[i])
-                      << std::hexfloat << "\n  batch " << out[i].F1 << ", " << out[i].F2 << ", " << out[i].M
-                      << "\n  alone " << one.F1 << ", " << one.F2 << ", " << one.M;
-  }
-}
 
 // A random valid contact: each quantity drawn from its common range or, often, from its special
 // values.
 class ContactMaker {
  public:
-  explicit ContactMaker(std::uint64_t seed) : rng_(seed) {}
+  explicit ContactMaker(std::uint64_t seed) : draws_(seed) {}
 
   ContactInput make() {
     for (;;) {
@@ -100,15 +76,10 @@ class ContactMaker {
   }
 
  private:
-  double uni() { return std::uniform_real_distribution<double>(0.0, 1.0)(rng_); }
-  double log_uniform(double lo, double hi) { return std::pow(10.0, lo + (hi - lo) * uni()); }
-  // One of `special` with probability 1/2 (each alike), else `common`.
-  double pick(std::initializer_list<double> special, double common) {
-    if (uni() < 0.5) return common;
-    const auto i = static_cast<std::size_t>(uni() * static_cast<double>(special.size()));
-    return special.begin()[i < special.size() ? i : special.size() - 1];
-  }
-  std::mt19937_64 rng_;
+  testing::SpecialDraws draws_;
+  double uni() { return draws_.uni(); }
+  double log_uniform(double lo, double hi) { return draws_.log_uniform(lo, hi); }
+  double pick(std::initializer_list<double> special, double common) { return draws_.pick(special, common); }
 };
 
 class FitBatch : public ::testing::TestWithParam<Pressure> {
@@ -116,9 +87,8 @@ class FitBatch : public ::testing::TestWithParam<Pressure> {
   FitLaw law() const { return FitLaw(GetParam()); }
 };
 
-std::string pressure_test_name(const ::testing::TestParamInfo<Pressure>& p) { return std::string(pressure_name(p.param)); }
 
-INSTANTIATE_TEST_SUITE_P(EveryPressure, FitBatch, ::testing::ValuesIn(kPressures), pressure_test_name);
+INSTANTIATE_TEST_SUITE_P(EveryPressure, FitBatch, ::testing::ValuesIn(testing::kEveryPressure), testing::pressure_test_name);
 
 TEST_P(FitBatch, EveryBatchSizeGivesThePerContactResultsBitForBit) {
   ContactMaker maker(11);
