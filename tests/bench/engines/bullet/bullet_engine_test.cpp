@@ -4,6 +4,7 @@
 // it has them (spinning friction needs rolling friction; the angular speed cap), which document
 // Bullet and fail if a later Bullet changes them.
 #include "bench/engines/bullet/bullet_engine.h"
+#include "tests/bench/engines/engine_test_support.h"
 
 #include <gtest/gtest.h>
 
@@ -20,32 +21,12 @@
 namespace frictionlab::engines {
 namespace {
 
+using testing::body_z;
+using testing::lowest_point_slip;
+using testing::slope;
+using testing::solid_sphere;
+
 constexpr double kG = 9.81;
-
-// Problem 4's sphere: R = 5 cm, 1 kg, solid (I = 2/5 m R^2).
-Body solid_sphere(double R = 0.05, double m = 1.0) {
-  Body b;
-  b.shape = Body::Shape::sphere;
-  b.radius = R;
-  b.mass = m;
-  const double I = 0.4 * m * R * R;
-  b.inertia = {I, I, I};
-  return b;
-}
-
-// The body's z axis in the world, from the body -> world quaternion (w, x, y, z).
-std::array<double, 3> body_z(const std::array<double, 4>& q) {
-  const double w = q[0], x = q[1], y = q[2], z = q[3];
-  return {2 * (x * z + w * y), 2 * (y * z - w * x), 1 - 2 * (x * x + y * y)};
-}
-
-double norm(const std::array<double, 3>& v) { return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); }
-
-// The slip speed of the sphere's lowest point: v + omega x (-R e_z).
-double slip(const Sample& s, double R) {
-  const std::array<double, 3> u{s.v[0] - R * s.omega[1], s.v[1] + R * s.omega[0], 0.0};
-  return norm(u);
-}
 
 void require_finite_sample(const Sample& s) {
   bool ok = std::isfinite(s.normal_force);
@@ -53,21 +34,6 @@ void require_finite_sample(const Sample& s) {
   for (const double x : s.v) ok = ok && std::isfinite(x);
   for (const double x : s.omega) ok = ok && std::isfinite(x);
   EXPECT_TRUE(ok) << "a non-finite sample at t = " << s.t;
-}
-
-// Least-squares slope of y(t) over the samples with t in [t0, t1].
-double slope(const std::vector<Sample>& samples, double t0, double t1, const std::function<double(const Sample&)>& y) {
-  double n = 0, st = 0, sy = 0, stt = 0, sty = 0;
-  for (const Sample& s : samples) {
-    if (s.t < t0 || s.t > t1) continue;
-    const double v = y(s);
-    n += 1;
-    st += s.t;
-    sy += v;
-    stt += s.t * s.t;
-    sty += s.t * v;
-  }
-  return (n * sty - st * sy) / (n * stt - st * st);
 }
 
 TEST(BulletEngine, NameVersionUnit) {
@@ -96,7 +62,7 @@ TEST(BulletEngine, SlidingSphereRollsAtFiveSevenths) {
   EXPECT_NEAR(last.v[0] / v0, 5.0 / 7.0, 0.02 * 5.0 / 7.0);
   double t_roll = -1.0;
   for (const Sample& s : run.samples) {
-    if (slip(s, R) < 1e-3 * v0) {
+    if (lowest_point_slip(s, R) < 1e-3 * v0) {
       t_roll = s.t;
       break;
     }

@@ -3,6 +3,7 @@
 // adapter's contract (determinism, bad input, the start pose, the disk's contact points).
 
 #include "bench/engines/mujoco/mujoco_engine.h"
+#include "tests/bench/engines/engine_test_support.h"
 
 #include <gtest/gtest.h>
 
@@ -19,38 +20,13 @@
 namespace frictionlab::engines {
 namespace {
 
+using testing::lowest_point_slip;
+using testing::slope;
+using testing::solid_sphere;
+
 constexpr double g = 9.81;
 
-// A solid sphere of radius R and mass m, centre of mass at its centre.
-Body solid_sphere(double R, double m) {
-  Body b;
-  b.shape = Body::Shape::sphere;
-  b.radius = R;
-  b.mass = m;
-  const double I = 0.4 * m * R * R;
-  b.inertia = {I, I, I};
-  return b;
-}
-
 double norm_xy(const std::array<double, 3>& x) { return std::hypot(x[0], x[1]); }
-
-// Slip speed of the sphere's lowest material point (centre of mass at the centre): v + omega x (-R e_z).
-double slip(const Sample& s, double R) {
-  return std::hypot(s.v[0] - s.omega[1] * R, s.v[1] + s.omega[0] * R);
-}
-
-// Least-squares slope of y(t).
-double slope(const std::vector<double>& t, const std::vector<double>& y) {
-  double st = 0, sy = 0, stt = 0, sty = 0;
-  const double n = static_cast<double>(t.size());
-  for (std::size_t i = 0; i < t.size(); ++i) {
-    st += t[i];
-    sy += y[i];
-    stt += t[i] * t[i];
-    sty += t[i] * y[i];
-  }
-  return (n * sty - st * sy) / (n * stt - st * st);
-}
 
 // Problem 4 at MuJoCo's default step (0.002 s) and friction (condim 4, the pyramidal cone): a solid
 // sphere launched sliding at v0 without spin rolls at 5/7 v0 from t = 2 v0 / (7 k g).
@@ -72,14 +48,14 @@ TEST(MujocoEngine, SlidingSphereRollsAtFiveSevenths) {
   // Slip ends: the first sample whose contact-point slip is below 1 % of v0.
   double t_roll = NAN;
   for (const auto& x : run.samples) {
-    if (slip(x, R) < 0.01 * v0) {
+    if (lowest_point_slip(x, R) < 0.01 * v0) {
       t_roll = x.t;
       break;
     }
   }
   const double t_exact = 2.0 * v0 / (7.0 * k * g);
   std::cout << "[ mujoco ] v_end / v0 = " << v_end / v0 << " (5/7 = " << 5.0 / 7.0 << "); slip < 1% v0 from t = "
-            << t_roll << " s, 2 v0/(7 k g) = " << t_exact << " s; slip at t_end = " << slip(run.samples.back(), R)
+            << t_roll << " s, 2 v0/(7 k g) = " << t_exact << " s; slip at t_end = " << lowest_point_slip(run.samples.back(), R)
             << " m/s\n[ mujoco ] notes: " << run.notes << std::endl;
   // Coulomb sliding at k g until then: the slip ends within a few steps of the closed form.
   EXPECT_NEAR(t_roll, t_exact, 0.05 * t_exact);
@@ -139,12 +115,7 @@ TEST(MujocoEngine, SpinDecaysAtTheTorsionalBound) {
     s.friction = f;
     s.t_end = std::min(3.0, 10.0 / expected);  // the first half of the decay from 20 1/s
     const engines::Run run = engine.run(s);
-    std::vector<double> t, w;
-    for (const auto& x : run.samples) {
-      t.push_back(x.t);
-      w.push_back(x.omega[2]);
-    }
-    return -slope(t, w);
+    return -slope(run.samples, 0.0, s.t_end, [](const Sample& x) { return x.omega[2]; });
   };
   const auto engine = make_mujoco_engine();
   const double expected = c * k * m * g * a / C;

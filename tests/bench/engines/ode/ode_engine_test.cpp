@@ -1,6 +1,7 @@
 // The ODE adapter against closed forms: rolling after sliding (5/7), its own spin law, the rocking
 // of a body whose centre of mass is off its centre, determinism, and bad input.
 #include "bench/engines/ode/ode_engine.h"
+#include "tests/bench/engines/engine_test_support.h"
 
 #include <gtest/gtest.h>
 
@@ -15,16 +16,14 @@
 namespace frictionlab::engines {
 namespace {
 
+using testing::slope;
+
 constexpr double g = 9.81;
 
 // A solid sphere of radius R and mass m resting on the plane.
 RunSpec solid_sphere(double R, double m, double k) {
   RunSpec spec;
-  spec.body.shape = Body::Shape::sphere;
-  spec.body.radius = R;
-  spec.body.mass = m;
-  const double I = 0.4 * m * R * R;
-  spec.body.inertia = {I, I, I};
+  spec.body = testing::solid_sphere(R, m);
   spec.friction.k = k;
   spec.numerics.g = g;
   return spec;
@@ -39,21 +38,6 @@ std::string invalid_argument_message(F&& f) {
     return e.what();
   }
   return "";
-}
-
-// Least-squares slope of y(t) over the samples with t in [t0, t1].
-double slope(const std::vector<Sample>& samples, double t0, double t1, double (*y)(const Sample&)) {
-  double n = 0, st = 0, sy = 0, stt = 0, sty = 0;
-  for (const Sample& s : samples) {
-    if (s.t < t0 || s.t > t1) continue;
-    const double v = y(s);
-    n += 1;
-    st += s.t;
-    sy += v;
-    stt += s.t * s.t;
-    sty += s.t * v;
-  }
-  return (n * sty - st * sy) / (n * stt - st * st);
 }
 
 // Problem 4: a solid sphere launched sliding at v0 without spin rolls at 5/7 v0 from
