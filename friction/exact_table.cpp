@@ -331,9 +331,7 @@ ExactTableValue ExactTable::at(double Xt, double Yt, double mu, double ln_mu) co
   double wt[6];
   double wx[4];
   double wz[4];
-  quintic_weights(cell.tau_t, wt);
-  cubic_weights(cell.tau_x, wx);
-  cubic_weights(cell.tau_z, wz);
+  exact_table_weights(cell, wt, wx, wz);
   return contract_cell(cell, wt, wx, wz);
 }
 
@@ -362,9 +360,7 @@ void ExactTable::contract_pair_wide(const ExactTableCell& first, const ExactTabl
   double wx[2][4];
   double wz[2][4];
   for (int k = 0; k < 2; ++k) {
-    quintic_weights(cells[k]->tau_t, wt[k]);
-    cubic_weights(cells[k]->tau_x, wx[k]);
-    cubic_weights(cells[k]->tau_z, wz[k]);
+    exact_table_weights(*cells[k], wt[k], wx[k], wz[k]);
   }
 #if defined(__x86_64__) || defined(__i386__)
   ExactTableValue values[2];

@@ -33,6 +33,7 @@
 #include <vector>
 
 #include "friction/pressure.h"
+#include "friction/uniform_bspline.h"
 
 namespace frictionlab::friction {
 
@@ -55,6 +56,14 @@ struct ExactTableCell {
   double tau_t, tau_x, tau_z;  ///< place in the cell, in [0, 1], along t, xi, zeta
   double fx, fy;          ///< Gx = fx u, Gy = fy v
 };
+
+/// The B-spline weights of a cell's place: quintic along t, cubic along xi and zeta
+/// (friction/uniform_bspline.h), as ExactTable::contract takes them.
+inline void exact_table_weights(const ExactTableCell& cell, double wt[6], double wx[4], double wz[4]) {
+  quintic_weights(cell.tau_t, wt);
+  cubic_weights(cell.tau_x, wx);
+  cubic_weights(cell.tau_z, wz);
+}
 
 /// The B-spline table of the exact law for one pressure model. Immutable once built; safe to read
 /// concurrently.

@@ -125,9 +125,7 @@ void sum_block(const Block& b, std::size_t lanes, bool wide, std::span<FrictionF
     double wt[6];
     double wx[4];
     double wz[4];
-    quintic_weights(cell.tau_t, wt);
-    cubic_weights(cell.tau_x, wx);
-    cubic_weights(cell.tau_z, wz);
+    exact_table_weights(cell, wt, wx, wz);
     out[b.index[i]] = exact_table_end(b.contact[i], ExactTable::contract(cell, wt, wx, wz));
   }
 }
