@@ -51,6 +51,7 @@
 #include <string>
 #include <utility>
 
+#include "dynamics/core/all_finite.h"
 #include "dynamics/core/observer.h"
 #include "dynamics/core/ode_stepping.h"
 #include "dynamics/core/pole_watch.h"
@@ -88,7 +89,7 @@ class ModelRhs final : public OdeRhs {
     has_last_ = false;
     State& x = last_x_;
     x = Eigen::Map<const State>(y);
-    if (!x.allFinite()) return fail_nonfinite(t, x);
+    if (!all_finite(x)) return fail_nonfinite(t, x);
     State d;
     try {
       Contact& c = last_contact_;
@@ -119,7 +120,7 @@ class ModelRhs final : public OdeRhs {
       message = std::string("at t = ") + support::message_number(t) + " s: " + e.what();
       return RhsStatus::stop;
     }
-    if (!d.allFinite()) return fail_nonfinite(t, x);
+    if (!all_finite(d)) return fail_nonfinite(t, x);
     last = RhsFailure::none;
     Eigen::Map<State> out(f);
     out = d;
@@ -145,7 +146,7 @@ class ModelRhs final : public OdeRhs {
   RhsStatus fail_nonfinite(double t, const State& x) {
     last = RhsFailure::nonfinite;
     message = "the right-hand side is not finite at t = " + support::message_number(t) + " s" +
-              (x.allFinite() ? ": " + model_.describe_friction(x, mode_) : std::string(" (the trial state is not finite)"));
+              (all_finite(x) ? ": " + model_.describe_friction(x, mode_) : std::string(" (the trial state is not finite)"));
     return RhsStatus::retry;
   }
 
@@ -173,7 +174,7 @@ typename Model::Summary run_model(const Model& model, const typename Model::Stat
   using run_loop_detail::RhsFailure;
 
   options.validate();
-  if (!x0.allFinite()) throw std::invalid_argument("the initial state is not finite");
+  if (!all_finite(x0)) throw std::invalid_argument("the initial state is not finite");
   use_gsl_status_codes();
   const auto wall_start = std::chrono::steady_clock::now();
   const IntegratorOptions& io = options.integrator;
@@ -269,7 +270,7 @@ typename Model::Summary run_model(const Model& model, const typename Model::Stat
     const StepOutcome outcome = stepper.advance(t, options.t_end, h, x.data());
     if (outcome.kind == StepOutcome::accepted) {
       ++s.steps;
-      if (!x.allFinite()) {
+      if (!all_finite(x)) {
         x = step.x0;
         t = step.t0;
         stop(Termination::non_finite, non_finite_step_message(t));

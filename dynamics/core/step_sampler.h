@@ -30,6 +30,7 @@
 #include <string_view>
 #include <utility>
 
+#include "dynamics/core/all_finite.h"
 #include "dynamics/core/observer.h"
 #include "dynamics/core/ode_stepping.h"
 
@@ -78,7 +79,7 @@ class StepSamplerOf {
     RhsStatus operator()(double /*t*/, const double* y, double* f) override {
       ++calls;
       const State x = Eigen::Map<const State>(y);
-      if (!x.allFinite()) return RhsStatus::stop;
+      if (!all_finite(x)) return RhsStatus::stop;
       State d;
       try {
         typename Model::Contact c;
@@ -87,7 +88,7 @@ class StepSamplerOf {
       } catch (const std::exception&) {
         return RhsStatus::stop;
       }
-      if (!d.allFinite()) return RhsStatus::stop;
+      if (!all_finite(d)) return RhsStatus::stop;
       Eigen::Map<State> out(f);
       out = d;
       return RhsStatus::ok;
