@@ -14,7 +14,7 @@
 #include "tests/cli/cli_runner.h"
 
 namespace frictionlab::testing {
-namespace {
+namespace accuracy_command_test {
 
 std::size_t count_lines(const std::string& s) {
   return static_cast<std::size_t>(std::count(s.begin(), s.end(), '\n'));

@@ -15,7 +15,7 @@
 #include "tests/cli/cli_runner.h"
 
 namespace frictionlab::testing {
-namespace {
+namespace calibrate_command_test {
 
 std::filesystem::path temp_out(const char* tag) {
   return std::filesystem::temp_directory_path() /

@@ -17,7 +17,7 @@
 #include "tests/friction/hertz_closed_forms.h"
 
 namespace frictionlab::calibration {
-namespace {
+namespace calibration_test {
 
 constexpr double pi = std::numbers::pi;
 

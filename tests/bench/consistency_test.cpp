@@ -8,7 +8,7 @@
 #include <vector>
 
 namespace frictionlab::accuracy {
-namespace {
+namespace consistency_test {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kInf = std::numeric_limits<double>::infinity();

@@ -10,7 +10,7 @@
 #include <vector>
 
 namespace frictionlab::accuracy {
-namespace {
+namespace error_stats_test {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kInf = std::numeric_limits<double>::infinity();

@@ -12,7 +12,7 @@
 #include <nlohmann/json.hpp>
 
 namespace frictionlab {
-namespace {
+namespace friction_bench_test {
 
 // Runs friction_bench with `args` (shell words) and returns its JSON report (stdout), or a
 // discarded value if it failed.

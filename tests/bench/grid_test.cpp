@@ -11,7 +11,7 @@
 #include <string>
 
 namespace frictionlab::accuracy {
-namespace {
+namespace grid_test {
 
 constexpr double pi = std::numbers::pi;
 // Nodes are computed by pow and by one multiply-add: a few ulps of 1 relative.

@@ -12,7 +12,7 @@
 #include <unistd.h>
 
 namespace frictionlab::mujoco_side {
-namespace {
+namespace mujoco_sphere_test {
 
 TEST(MujocoSphere, PureSpinDeceleratesAtTheConesTorqueLimit) {
   SphereSpec s;  // R = 5 cm, m = 1 kg, k = 0.2, g = 9.81

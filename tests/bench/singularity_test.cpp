@@ -14,7 +14,7 @@
 #include "friction/registry.h"
 
 namespace frictionlab::accuracy {
-namespace {
+namespace singularity_test {
 
 constexpr double pi = std::numbers::pi;
 // The study's denominators and the law share the coefficients; they differ only by the order of a

@@ -22,7 +22,7 @@
 #include "friction/reference_laws.h"
 
 namespace frictionlab::accuracy {
-namespace {
+namespace study_test {
 
 // exact-reference (GSL) lives in its own library: registered here, as the command does.
 [[maybe_unused]] const bool kReferenceLawsRegistered = (friction::register_reference_laws(), true);

@@ -22,7 +22,7 @@
 #include "friction/reference_laws.h"
 
 namespace frictionlab::testing {
-namespace {
+namespace friction_command_test {
 
 // The command registers exact-reference (GSL); so does this process, to compare its listing.
 [[maybe_unused]] const bool kReferenceLawsRegistered = (frictionlab::friction::register_reference_laws(), true);

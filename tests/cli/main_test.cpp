@@ -12,7 +12,7 @@
 #include "tests/cli/cli_runner.h"
 
 namespace frictionlab::testing {
-namespace {
+namespace main_test {
 
 long count_lines(const std::string& s) { return std::count(s.begin(), s.end(), '\n'); }
 

@@ -13,7 +13,7 @@
 #include <vector>
 
 namespace frictionlab::cli {
-namespace {
+namespace option_values_test {
 
 struct Options {
   long long count = 0;

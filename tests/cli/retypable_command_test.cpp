@@ -6,7 +6,7 @@
 #include <gtest/gtest.h>
 
 namespace frictionlab::cli {
-namespace {
+namespace retypable_command_test {
 
 struct Parsed {
   CLI::App app{"test"};

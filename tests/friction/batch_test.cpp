@@ -22,7 +22,7 @@
 #include "friction/registry.h"
 
 namespace frictionlab::friction {
-namespace {
+namespace batch_test {
 
 std::string run(const std::string& csv, std::string* error = nullptr) {
   const PadePrintedLaw law;

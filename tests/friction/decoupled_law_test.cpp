@@ -15,7 +15,7 @@
 #include <string>
 
 namespace frictionlab::friction {
-namespace {
+namespace decoupled_law_test {
 
 constexpr double pi = std::numbers::pi;
 // Closed forms evaluated with a few operations and tgamma (accurate to a few ulp), compared with

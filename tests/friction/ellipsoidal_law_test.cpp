@@ -16,7 +16,7 @@
 #include <string>
 
 namespace frictionlab::friction {
-namespace {
+namespace ellipsoidal_law_test {
 
 constexpr double pi = std::numbers::pi;
 // Hand values below are a few rationals times pi: 1e-14 relative covers the rounding of the

@@ -14,7 +14,7 @@
 #include "friction/registry.h"
 
 namespace frictionlab::friction {
-namespace {
+namespace engine_law_specs_test {
 
 // A contact that slips and spins, with its pure-spin twin (const, not constexpr: an angle's cosine and
 // sine are computed at run time, friction/patch_angle.h).

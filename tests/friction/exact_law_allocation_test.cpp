@@ -8,7 +8,7 @@
 #include "friction/exact_law.h"
 
 namespace frictionlab::friction {
-namespace {
+namespace exact_law_allocation_test {
 
 TEST(ExactLawAllocation, NoHeapAllocationPerEvaluation) {
   const ExactLaw law;

@@ -30,7 +30,7 @@
 #include "tests/friction/dimensionless_contact.h"
 
 namespace frictionlab::friction {
-namespace {
+namespace exact_law_pressure_table_test {
 
 struct TableRow {
   Pressure pressure;

@@ -19,7 +19,7 @@
 #include "friction/registry.h"
 
 namespace frictionlab::friction {
-namespace {
+namespace exact_law_pressure_test {
 
 constexpr double kPi = std::numbers::pi;
 // The accuracy `exact` promises for the uniform and punch pressures (per kN and kNa).

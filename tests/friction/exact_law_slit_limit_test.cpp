@@ -16,7 +16,7 @@
 #include "tests/friction/slit_limit.h"
 
 namespace frictionlab::friction {
-namespace {
+namespace exact_law_slit_limit_test {
 
 constexpr double kPi = std::numbers::pi;
 const Pressure kAll[] = {Pressure::hertz, Pressure::uniform, Pressure::punch};

@@ -29,7 +29,7 @@
 #include "tests/friction/dimensionless_contact.h"
 
 namespace frictionlab::friction {
-namespace {
+namespace exact_law_table_test {
 
 struct TableRow {
   std::string kind;

@@ -19,7 +19,7 @@
 #include "tests/friction/hertz_closed_forms.h"
 
 namespace frictionlab::friction {
-namespace {
+namespace exact_law_test {
 
 constexpr double kPi = std::numbers::pi;
 

@@ -20,7 +20,7 @@
 #include "tests/friction/hertz_closed_forms.h"
 
 namespace frictionlab::friction {
-namespace {
+namespace exact_reference_law_test {
 
 constexpr double kPi = std::numbers::pi;
 

@@ -33,7 +33,7 @@
 #include "friction/pressure.h"
 
 namespace frictionlab::friction {
-namespace {
+namespace exact_table_batch_test {
 
 using testing::describe;
 using testing::expect_batch_is_per_contact;

@@ -31,7 +31,7 @@
 #include "tests/friction/hertz_closed_forms.h"
 
 namespace frictionlab::friction {
-namespace {
+namespace exact_table_law_test {
 
 constexpr double kPi = std::numbers::pi;
 // The promise: per kN (F1, F2) and per kNa (M), against exact, for b/a >= 0.01.

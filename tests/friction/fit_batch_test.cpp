@@ -27,7 +27,7 @@
 #include "friction/pressure.h"
 
 namespace frictionlab::friction {
-namespace {
+namespace fit_batch_test {
 
 using testing::describe;
 using testing::expect_batch_is_per_contact;

@@ -26,7 +26,7 @@
 #include "tests/friction/dense_check_set.h"
 
 namespace frictionlab::friction {
-namespace {
+namespace fit_law_test {
 
 constexpr double kPi = std::numbers::pi;
 // The fitted range of axis ratios (docs/fit.md §3).

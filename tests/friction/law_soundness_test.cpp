@@ -29,7 +29,7 @@
 #include "friction/reference_laws.h"
 
 namespace frictionlab::friction {
-namespace {
+namespace law_soundness_test {
 
 // exact-reference (GSL) lives in its own library: registered here, as the command does.
 [[maybe_unused]] const bool kReferenceLawsRegistered = (friction::register_reference_laws(), true);
@@ -154,7 +154,7 @@ double parity_sign(Parity p) { return p == Parity::odd ? -1.0 : 1.0; }
 // gtest prints a parameter with this (its name) rather than as bytes.
 void PrintTo(const LawInfo& info, std::ostream* os) { *os << info.spec; }
 
-namespace {
+namespace law_soundness_test {
 
 class LawSoundness : public ::testing::TestWithParam<LawInfo> {
  protected:

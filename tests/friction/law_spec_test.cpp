@@ -11,7 +11,7 @@
 #include <vector>
 
 namespace frictionlab::friction {
-namespace {
+namespace law_spec_test {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 

@@ -13,7 +13,7 @@
 #include "friction/reference_laws.h"
 
 namespace frictionlab::friction {
-namespace {
+namespace law_test {
 
 // exact-reference (GSL) lives in its own library: registered here, as the command does.
 [[maybe_unused]] const bool kReferenceLawsRegistered = (friction::register_reference_laws(), true);

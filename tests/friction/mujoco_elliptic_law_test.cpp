@@ -16,7 +16,7 @@
 #include "friction/ellipsoidal_law.h"
 
 namespace frictionlab::friction {
-namespace {
+namespace mujoco_elliptic_law_test {
 
 // Closed forms of a handful of operations: 1e-14 relative.
 constexpr double kHandTol = 1e-14;

@@ -11,7 +11,7 @@
 #include <string>
 
 namespace frictionlab::friction {
-namespace {
+namespace pade_printed_law_test {
 
 constexpr double pi = std::numbers::pi;
 // The hand values below are exact rationals times powers of pi, evaluated once; 1e-14 relative

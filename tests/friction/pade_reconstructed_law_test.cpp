@@ -20,7 +20,7 @@
 #include <vector>
 
 namespace frictionlab::friction {
-namespace {
+namespace pade_reconstructed_law_test {
 
 constexpr double pi = std::numbers::pi;
 // The AGM and Boost both deliver K and E to a few ulp; 1e-14 relative leaves room for both.

@@ -12,7 +12,7 @@
 #include <random>
 
 namespace frictionlab::friction {
-namespace {
+namespace patch_angle_test {
 
 constexpr double kPi = std::numbers::pi;
 // atan2 of a unit direction and the cosine and sine of its double angle agree to a few roundings.

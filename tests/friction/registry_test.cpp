@@ -22,7 +22,7 @@
 #include "friction/reference_laws.h"
 
 namespace frictionlab::friction {
-namespace {
+namespace registry_test {
 
 template <class F>
 std::string error_of(F&& f) {

@@ -51,7 +51,7 @@ const fl::LawRegistrar torsional_registrar{{
 }  // namespace user
 
 namespace frictionlab::friction {
-namespace {
+namespace user_law_example_test {
 
 TEST(UserLawExample, IsMadeByItsSpecAndComputesItsFormula) {
   const auto law = make_law("user-torsional:r_spin=0.002");

@@ -9,7 +9,7 @@
 #include <string>
 
 namespace frictionlab::support {
-namespace {
+namespace checked_input_test {
 
 std::filesystem::path temp(const std::string& name) {
   return std::filesystem::temp_directory_path() / ("frictionlab_checked_input_" + name + "_" + std::to_string(::getpid()));

@@ -14,7 +14,7 @@
 #include <string>
 
 namespace frictionlab::support {
-namespace {
+namespace checked_output_test {
 
 namespace fs = std::filesystem;
 

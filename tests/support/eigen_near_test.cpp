@@ -5,7 +5,7 @@
 #include <limits>
 
 namespace frictionlab::testing {
-namespace {
+namespace eigen_near_test {
 
 TEST(SupportEigenNear, PassesWithinTheToleranceForVectorsMatricesAndExpressions) {
   const Eigen::Vector3d a(1.0, 2.0, 3.0);

@@ -6,7 +6,7 @@
 #include <limits>
 
 namespace frictionlab::support {
-namespace {
+namespace errors_test {
 
 TEST(SupportErrors, NamesKeyValueAndRule) {
   const InvalidValue e = invalid_value("body.mass", 1e-300, "it must be >= 1e-06 kg");

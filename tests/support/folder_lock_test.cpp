@@ -10,7 +10,7 @@
 #include <string>
 
 namespace frictionlab::support {
-namespace {
+namespace folder_lock_test {
 
 std::filesystem::path fresh(const std::string& name) {
   const auto dir =

@@ -9,7 +9,7 @@
 #include <vector>
 
 namespace frictionlab::support {
-namespace {
+namespace gnuplot_test {
 
 namespace fs = std::filesystem;
 

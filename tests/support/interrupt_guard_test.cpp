@@ -14,7 +14,7 @@
 #include <stdexcept>
 
 namespace frictionlab::support {
-namespace {
+namespace interrupt_guard_test {
 
 extern "C" void marker_handler(int) {}
 

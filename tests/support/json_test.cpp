@@ -5,7 +5,7 @@
 #include <limits>
 
 namespace frictionlab::support {
-namespace {
+namespace json_test {
 
 TEST(SupportJson, KeepsKeysInTheOrderAdded) {
   Json j;

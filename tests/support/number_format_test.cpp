@@ -12,7 +12,7 @@
 #include <random>
 
 namespace frictionlab::support {
-namespace {
+namespace number_format_test {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();

@@ -12,7 +12,7 @@
 #include "bench/engines/measures.h"
 
 namespace frictionlab::engines {
-namespace {
+namespace problems_test {
 
 const std::filesystem::path kScenarios = std::filesystem::path(FRICTIONLAB_SOURCE_DIR) / "data" / "scenarios";
 

@@ -12,7 +12,7 @@
 
 #include "bench/engines/engine_list.h"
 
-namespace {
+namespace side_by_side_test {
 
 const std::string kExe = ENGINES_EXE;
 const std::string kScenarios = std::string(FRICTIONLAB_SOURCE_DIR) + "/data/scenarios";

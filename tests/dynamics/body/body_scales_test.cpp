@@ -7,7 +7,7 @@
 #include "tests/dynamics/test_support.h"
 
 namespace frictionlab::dynamics {
-namespace {
+namespace body_scales_test {
 
 constexpr double kSizeRelTol = 1e-13;
 

@@ -5,7 +5,7 @@
 #include <string>
 
 namespace frictionlab::dynamics {
-namespace {
+namespace body_test {
 
 // docs/model.md §6 prints 3 significant digits.
 constexpr double kPrintedTol = 5e-5;

@@ -18,7 +18,7 @@
 #include "tests/dynamics/test_support.h"
 
 namespace frictionlab::dynamics {
-namespace {
+namespace convex_body_motion_test {
 
 // Collects every sample.
 class Recorder final : public Observer {

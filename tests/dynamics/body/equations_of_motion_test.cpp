@@ -16,7 +16,7 @@
 using frictionlab::bench::g_allocations;
 
 namespace frictionlab::dynamics {
-namespace {
+namespace equations_of_motion_test {
 
 using testing::egg_body;
 using testing::SmoothTestLaw;

@@ -12,7 +12,7 @@
 #include "friction/registry.h"
 
 namespace frictionlab::dynamics {
-namespace {
+namespace rattleback_test {
 
 struct SpinRecorder final : public Observer {
   void sample(const Sample& s) override {

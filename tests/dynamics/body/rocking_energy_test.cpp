@@ -8,7 +8,7 @@
 #include <limits>
 
 namespace frictionlab::dynamics {
-namespace {
+namespace rocking_energy_test {
 
 constexpr double kG = 9.81;
 

@@ -40,7 +40,7 @@
 #include "tests/dynamics/test_support.h"
 
 namespace frictionlab::dynamics {
-namespace {
+namespace rolling_disk_test {
 
 // The disk of data/scenarios/disk-rolling-circle.toml: centre circle R = 2 cm, rim rho = 3 mm, 50 g,
 // homogeneous; the circle of the contact point rc = 0.25 m at the lean beta = 0.15 rad.

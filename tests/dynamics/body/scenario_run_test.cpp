@@ -15,7 +15,7 @@
 #include "friction/registry.h"
 
 namespace frictionlab::dynamics {
-namespace {
+namespace scenario_run_test {
 
 const char* kSphere = R"(
 [body]

@@ -6,7 +6,7 @@
 #include <string>
 
 namespace frictionlab::dynamics {
-namespace {
+namespace scenario_test {
 
 const char* kGood = R"(
 name = "test"
@@ -326,7 +326,7 @@ TEST(DynScenario, ShippedScenariosAreValid) {
 }  // namespace frictionlab::dynamics
 
 namespace frictionlab::dynamics {
-namespace {
+namespace scenario_test {
 
 // [body] of another shape kind (docs/convex-bodies.md §10): its parameters, the centre of mass as a
 // point, the full inertia tensor; the pose in [initial].

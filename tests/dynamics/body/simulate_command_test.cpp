@@ -14,7 +14,7 @@
 #include "tests/cli/cli_runner.h"
 
 namespace frictionlab {
-namespace {
+namespace simulate_command_test {
 
 using testing::run_frictionlab;
 using testing::slurp;

@@ -21,7 +21,7 @@
 #include "tests/dynamics/test_support.h"
 
 namespace frictionlab::dynamics {
-namespace {
+namespace simulation_convergence_test {
 
 struct SlidingSphere {
   double R = 0.05, m = 1.0, k = 0.2, lambda = 1e7, g = 9.81, v0 = 2.0;

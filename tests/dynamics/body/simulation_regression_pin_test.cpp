@@ -9,7 +9,7 @@
 #include "tests/dynamics/test_support.h"
 
 namespace frictionlab::dynamics {
-namespace {
+namespace simulation_regression_pin_test {
 
 // Where the printed Padé law (eq. (8)) stops the paper's case a: its F2 denominator passes through
 // 0. Observed 2026-11-22 (2-core AMD EPYC KVM, Debian 12, g++ 12.2) with `frictionlab simulate

@@ -15,7 +15,7 @@
 #include "tests/dynamics/test_support.h"
 
 namespace frictionlab::dynamics {
-namespace {
+namespace simulation_test {
 
 using testing::egg_body;
 using testing::paper_case_a;

@@ -24,7 +24,7 @@
 #include "tests/dynamics/test_support.h"
 
 namespace frictionlab::dynamics {
-namespace {
+namespace slip_hold_test {
 
 using testing::sphere_body;
 

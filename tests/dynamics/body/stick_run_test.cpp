@@ -15,7 +15,7 @@
 #include "tests/dynamics/test_support.h"
 
 namespace frictionlab::dynamics {
-namespace {
+namespace stick_run_test {
 
 using testing::sphere_body;
 

@@ -17,7 +17,7 @@
 #include "dynamics/shapes/profile.h"
 
 namespace frictionlab::dynamics {
-namespace {
+namespace stick_test {
 
 // An eccentric sphere: radius R, geometric centre at c0 from the centre of mass (body frame), a
 // full inertia tensor; the contact point r = c0 - R gamma; gravity and a given normal force.

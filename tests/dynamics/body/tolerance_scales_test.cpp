@@ -7,7 +7,7 @@
 #include "tests/dynamics/test_support.h"
 
 namespace frictionlab::dynamics {
-namespace {
+namespace tolerance_scales_test {
 
 TEST(DynToleranceScales, EachComponentIsScaledByItsOwnMagnitude) {
   BodyScales s;

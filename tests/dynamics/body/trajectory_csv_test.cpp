@@ -15,7 +15,7 @@
 #include <vector>
 
 namespace frictionlab::dynamics {
-namespace {
+namespace trajectory_csv_test {
 
 std::string slurp(const std::filesystem::path& p) {
   std::ifstream in(p, std::ios::binary);

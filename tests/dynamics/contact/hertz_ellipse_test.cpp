@@ -16,7 +16,7 @@
 #include <string>
 
 namespace frictionlab::dynamics {
-namespace {
+namespace hertz_ellipse_test {
 
 constexpr double pi = std::numbers::pi;
 // The quadrature is converged to ~1e-15; the solver returns mu to 2 ulps; the relations below

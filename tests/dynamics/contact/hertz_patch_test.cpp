@@ -17,7 +17,7 @@
 #include "tests/dynamics/test_support.h"
 
 namespace frictionlab::dynamics {
-namespace {
+namespace hertz_patch_test {
 
 using testing::egg_body;
 using testing::sphere_body;

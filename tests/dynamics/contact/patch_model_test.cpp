@@ -13,7 +13,7 @@
 #include "dynamics/body/scenario.h"
 
 namespace frictionlab::dynamics {
-namespace {
+namespace patch_model_test {
 
 const char* kSphere = R"(
 [body]

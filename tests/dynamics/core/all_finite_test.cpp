@@ -6,7 +6,7 @@
 #include <limits>
 
 namespace frictionlab::dynamics {
-namespace {
+namespace all_finite_test {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();

@@ -8,7 +8,7 @@
 #include <string>
 
 namespace frictionlab::dynamics {
-namespace {
+namespace chatter_watch_test {
 
 // A 5 cm body under 9.81 m/s^2 (dynamics/body/body_scales.h).
 BodyScales scales_of(double mass, double size) {

@@ -16,7 +16,7 @@
 #include "friction/registry.h"
 
 namespace frictionlab::dynamics {
-namespace {
+namespace limit_set_test {
 
 constexpr double kPi = std::numbers::pi;
 constexpr double k = 0.3;

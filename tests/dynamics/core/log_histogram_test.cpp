@@ -9,7 +9,7 @@
 #include <vector>
 
 namespace frictionlab::dynamics {
-namespace {
+namespace log_histogram_test {
 
 // The exact weighted quantile: the smallest value whose cumulative weight reaches q of the total
 // (an independent computation by sorting).

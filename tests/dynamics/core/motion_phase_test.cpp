@@ -6,7 +6,7 @@
 #include <string>
 
 namespace frictionlab::dynamics {
-namespace {
+namespace motion_phase_test {
 
 MotionPhaseRule rule() {
   MotionPhaseRule r;

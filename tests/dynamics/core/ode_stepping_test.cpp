@@ -6,7 +6,7 @@
 #include <cmath>
 
 namespace frictionlab::dynamics {
-namespace {
+namespace ode_stepping_test {
 
 // x' = -x (both components), refusing (retry) any trial state whose first component falls below
 // `floor`, and stopping at t >= `stop_at`.

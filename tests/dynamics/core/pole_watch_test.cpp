@@ -15,7 +15,7 @@
 using frictionlab::bench::g_allocations;
 
 namespace frictionlab::dynamics {
-namespace {
+namespace pole_watch_test {
 
 // The body's map of its contact to the watch's shape coordinates (BodyOnPlane::pole_point); a
 // point is itself.

@@ -9,7 +9,7 @@
 #include "tests/dynamics/test_support.h"
 
 namespace frictionlab::dynamics {
-namespace {
+namespace rest_event_test {
 
 BodyScales scales_of(double mass, double size) {
   BodyScales s;

@@ -10,7 +10,7 @@
 #include "dynamics/core/run_summary.h"
 
 namespace frictionlab::dynamics {
-namespace {
+namespace run_stops_test {
 
 struct Stops {
   std::vector<std::pair<Termination, std::string>> seen;

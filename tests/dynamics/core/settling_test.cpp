@@ -7,7 +7,7 @@
 #include <stdexcept>
 
 namespace frictionlab::dynamics {
-namespace {
+namespace settling_test {
 
 SettleRule rule(double time, double speed) { return resolve_settling({time, speed}, BodyScales{}); }
 

@@ -10,7 +10,7 @@
 #include "tests/dynamics/test_support.h"
 
 namespace frictionlab::dynamics {
-namespace {
+namespace shadow_laws_test {
 
 using testing::CoulombCircleTestLaw;
 using testing::PoleTestLaw;

@@ -10,7 +10,7 @@
 #include "tests/dynamics/test_support.h"
 
 namespace frictionlab::dynamics {
-namespace {
+namespace step_sampler_test {
 
 // The egg in free flight without gravity, spinning about its symmetry axis at w: omega stays
 // (0, 0, w); gamma and v turn about e3 at -w (gamma' = gamma x omega); eps grows at the constant

@@ -16,7 +16,7 @@
 #include <string_view>
 
 namespace frictionlab::dynamics {
-namespace {
+namespace trajectory_file_test {
 
 std::string slurp(const std::filesystem::path& p) {
   std::ifstream in(p, std::ios::binary);

@@ -5,7 +5,7 @@
 #include <gtest/gtest.h>
 
 namespace frictionlab::dynamics::ensemble {
-namespace {
+namespace cluster_prediction_test {
 
 TEST(EnsembleClusterPrediction, EqualTasksTakeCeilingOfTheirShareOfCores) {
   const std::vector<double> tasks(10, 2.0);

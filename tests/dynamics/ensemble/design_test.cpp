@@ -9,7 +9,7 @@
 #include <stdexcept>
 
 namespace frictionlab::dynamics::ensemble {
-namespace {
+namespace design_test {
 
 TEST(EnsembleDesign, SobolStartsAsGslDocumentsIt) {
   // The GSL manual's example of gsl_qrng_sobol in 2 dimensions ("Quasi-Random Sequences",

@@ -16,7 +16,7 @@
 #include "tests/dynamics/ensemble/runs_csv_reader.h"
 
 namespace frictionlab {
-namespace {
+namespace ensemble_command_test {
 
 namespace fs = std::filesystem;
 using testing::run_frictionlab;

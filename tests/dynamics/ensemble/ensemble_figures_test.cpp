@@ -15,7 +15,7 @@
 #include <vector>
 
 namespace frictionlab::dynamics::ensemble {
-namespace {
+namespace ensemble_figures_test {
 
 namespace fs = std::filesystem;
 

@@ -20,7 +20,7 @@
 #include "tests/dynamics/ensemble/runs_csv_reader.h"
 
 namespace frictionlab {
-namespace {
+namespace ensemble_mpi_test {
 
 namespace fs = std::filesystem;
 using testing::runs_without_wall_time;

@@ -11,7 +11,7 @@
 #include "dynamics/rigid_rolling/inertia_misalignment.h"
 
 namespace frictionlab::dynamics::ensemble {
-namespace {
+namespace ensemble_plan_test {
 
 const std::filesystem::path kStudies = std::filesystem::path(FRICTIONLAB_SOURCE_DIR) / "data" / "studies";
 

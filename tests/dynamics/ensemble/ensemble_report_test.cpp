@@ -6,7 +6,7 @@
 #include <gtest/gtest.h>
 
 namespace frictionlab::dynamics::ensemble {
-namespace {
+namespace ensemble_report_test {
 
 const std::filesystem::path kStudies = std::filesystem::path(FRICTIONLAB_SOURCE_DIR) / "data" / "studies";
 

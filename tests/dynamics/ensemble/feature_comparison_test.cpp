@@ -10,7 +10,7 @@
 #include "dynamics/ensemble/random_stream.h"
 
 namespace frictionlab::dynamics::ensemble {
-namespace {
+namespace feature_comparison_test {
 
 // 200 replicas per law: t_rest ~ uniform(100, 200) s, drawn anew for "same", exact's own value
 // plus a shift for "shifted"; final class pole+ unless the law turns it.

@@ -9,7 +9,7 @@
 #include <numbers>
 
 namespace frictionlab::dynamics::ensemble {
-namespace {
+namespace kolmogorov_distribution_test {
 
 TEST(EnsembleKolmogorovDistribution, CriticalValuesMatchTheTables) {
   // The asymptotic critical values z_alpha with Q_KS(z_alpha) = alpha, as tabulated to three

@@ -7,7 +7,7 @@
 #include <cmath>
 
 namespace frictionlab::dynamics::ensemble {
-namespace {
+namespace outcome_map_test {
 
 RunRecord run(long start, long replica, const std::string& law, const std::string& cls, double t_vertical = std::nan("")) {
   RunRecord r;

@@ -5,7 +5,7 @@
 #include <gtest/gtest.h>
 
 namespace frictionlab::dynamics::ensemble {
-namespace {
+namespace progress_meter_test {
 
 TEST(EnsembleProgressMeter, LineSaysRunsRateAndTimeLeft) {
   // 100 of 1000 done before, 200 now in 100 s: 2 runs/s, 700 left: 350 s = 6 min.

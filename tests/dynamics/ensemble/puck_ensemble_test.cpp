@@ -17,7 +17,7 @@
 #include "tests/dynamics/ensemble/runs_csv_reader.h"
 
 namespace frictionlab {
-namespace {
+namespace puck_ensemble_test {
 
 namespace fs = std::filesystem;
 using testing::run_frictionlab;

@@ -9,7 +9,7 @@
 #include <set>
 
 namespace frictionlab::dynamics::ensemble {
-namespace {
+namespace random_stream_test {
 
 TEST(EnsembleRandomStream, UniformIsTheTop53BitsOfTheStandardEngine) {
   // The C++ standard ([rand.predef]) fixes the 10000th output of mt19937_64 with its default

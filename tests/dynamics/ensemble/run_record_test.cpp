@@ -11,7 +11,7 @@
 #include "dynamics/ensemble/csv_row.h"
 
 namespace frictionlab::dynamics::ensemble {
-namespace {
+namespace run_record_test {
 
 TEST(EnsembleCsvRow, FieldsWithCommasQuotesAndLineBreaksAreQuoted) {
   std::string row;

@@ -5,7 +5,7 @@
 #include <gtest/gtest.h>
 
 namespace frictionlab::dynamics::ensemble {
-namespace {
+namespace run_recorder_test {
 
 void feed(RunRecorder& r, double t, double gamma3) {
   const StateVector x = StateVector::Zero();

@@ -10,7 +10,7 @@
 
 
 namespace frictionlab::dynamics::ensemble {
-namespace {
+namespace runs_file_test {
 
 namespace fs = std::filesystem;
 

@@ -7,7 +7,7 @@
 #include <cmath>
 
 namespace frictionlab::dynamics::ensemble {
-namespace {
+namespace sample_statistics_test {
 
 TEST(EnsembleSampleStatistics, QuantilesInterpolateOrderStatistics) {
   // Type 7 on {1, 2, 3, 4}: h = 3 p; p = 0.25 -> 1.75, 0.5 -> 2.5, 0.9 -> 3.7 (R: quantile(1:4, ...)).

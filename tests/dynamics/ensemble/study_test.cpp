@@ -9,7 +9,7 @@
 #include <string>
 
 namespace frictionlab::dynamics::ensemble {
-namespace {
+namespace study_test {
 
 const std::filesystem::path kFolder = "/studies";
 

@@ -16,7 +16,7 @@
 #include "friction/support/json.h"
 
 namespace frictionlab::dynamics::ensemble {
-namespace {
+namespace task_execution_test {
 
 const std::filesystem::path kStudies = std::filesystem::path(FRICTIONLAB_SOURCE_DIR) / "data" / "studies";
 

@@ -11,7 +11,7 @@
 #include <vector>
 
 namespace frictionlab::dynamics::ensemble {
-namespace {
+namespace trajectory_store_test {
 
 namespace fs = std::filesystem;
 

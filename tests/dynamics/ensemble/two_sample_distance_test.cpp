@@ -11,7 +11,7 @@
 #include "dynamics/ensemble/random_stream.h"
 
 namespace frictionlab::dynamics::ensemble {
-namespace {
+namespace two_sample_distance_test {
 
 std::vector<double> uniform_grid(int n, double shift) {
   std::vector<double> v;

@@ -14,7 +14,7 @@
 #include "dynamics/body/scenario_run.h"
 
 namespace frictionlab::dynamics::ensemble {
-namespace {
+namespace variant_test {
 
 const std::filesystem::path kStudies = std::filesystem::path(FRICTIONLAB_SOURCE_DIR) / "data" / "studies";
 const std::filesystem::path kScenario = kStudies / ".." / "scenarios" / "egg-printed-a.toml";

@@ -14,7 +14,7 @@
 #include "dynamics/rigid_rolling/inertia_misalignment.h"
 
 namespace frictionlab::dynamics::ensemble {
-namespace {
+namespace varied_key_test {
 
 InitialState base() {
   InitialState s;

@@ -12,7 +12,7 @@
 #include "friction/support/checked_output.h"
 
 namespace frictionlab::dynamics {
-namespace {
+namespace run_folder_test {
 
 std::filesystem::path fresh_dir(const std::string& name) {
   const auto dir = std::filesystem::temp_directory_path() / ("frictionlab-run-folder-" + name + "-" + std::to_string(::getpid()));

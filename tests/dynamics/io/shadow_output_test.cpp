@@ -25,7 +25,7 @@
 #include "friction/support/json.h"
 
 namespace frictionlab::dynamics {
-namespace {
+namespace shadow_output_test {
 
 std::string slurp(const std::filesystem::path& p) {
   std::ifstream in(p);

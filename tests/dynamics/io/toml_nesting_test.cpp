@@ -13,7 +13,7 @@
 #include "dynamics/body/scenario.h"
 
 namespace frictionlab::dynamics {
-namespace {
+namespace toml_nesting_test {
 
 // Far beyond the limit: at this depth toml++ 3.3 crashed the process.
 constexpr int kDeep = 40000;

@@ -14,7 +14,7 @@
 #include <vector>
 
 namespace frictionlab::dynamics::paper {
-namespace {
+namespace along_motion_test {
 
 namespace fs = std::filesystem;
 

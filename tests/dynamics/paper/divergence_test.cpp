@@ -17,7 +17,7 @@
 #include "dynamics/paper/run_series.h"
 
 namespace frictionlab::dynamics::paper {
-namespace {
+namespace divergence_test {
 
 namespace fs = std::filesystem;
 

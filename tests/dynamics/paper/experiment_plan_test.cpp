@@ -8,7 +8,7 @@
 #include <stdexcept>
 
 namespace frictionlab::dynamics::paper {
-namespace {
+namespace experiment_plan_test {
 
 PlanOptions options() {
   PlanOptions o;

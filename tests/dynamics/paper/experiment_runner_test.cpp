@@ -17,7 +17,7 @@
 #include "dynamics/body/scenario_run.h"
 
 namespace frictionlab::dynamics::paper {
-namespace {
+namespace experiment_runner_test {
 
 namespace fs = std::filesystem;
 

@@ -7,7 +7,7 @@
 #include <cmath>
 
 namespace frictionlab::dynamics::paper {
-namespace {
+namespace feature_json_test {
 
 // Equal as doubles, NaN equal to NaN.
 void expect_same(double a, double b, const char* what) {

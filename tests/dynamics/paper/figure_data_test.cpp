@@ -15,7 +15,7 @@
 #include <string>
 
 namespace frictionlab::dynamics::paper {
-namespace {
+namespace figure_data_test {
 
 constexpr double kDt = 0.01;        // s, the paper job's sample interval
 constexpr double kRounding = 1e-12;

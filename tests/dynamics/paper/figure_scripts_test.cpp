@@ -15,7 +15,7 @@
 #include <vector>
 
 namespace frictionlab::dynamics::paper {
-namespace {
+namespace figure_scripts_test {
 
 namespace fs = std::filesystem;
 

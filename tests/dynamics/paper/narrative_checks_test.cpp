@@ -9,7 +9,7 @@
 #include <string>
 
 namespace frictionlab::dynamics::paper {
-namespace {
+namespace narrative_checks_test {
 
 constexpr double kWeight = 2.0 * 9.81;  // N, the paper's egg
 

@@ -19,7 +19,7 @@
 #include "dynamics/paper/experiment_runner.h"
 
 namespace frictionlab::dynamics::paper {
-namespace {
+namespace paper_cases_regression_pin_test {
 
 // s: long enough for case (a) to reach the vertical (seen at 3.0 s and 4.7 s for the two eggs),
 // short enough for a test (~0.1 s of integration in Release for all six runs).

@@ -18,7 +18,7 @@
 #include "tests/cli/cli_runner.h"
 
 namespace frictionlab {
-namespace {
+namespace paper_command_test {
 
 using testing::run_frictionlab;
 using testing::slurp;

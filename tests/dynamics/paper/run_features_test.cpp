@@ -10,7 +10,7 @@
 #include <stdexcept>
 
 namespace frictionlab::dynamics::paper {
-namespace {
+namespace run_features_test {
 
 constexpr double kDt = 0.01;  // s, the paper command's sample interval
 // Sampled times are on a 0.01 s grid and the moving averages are 1 s and 5 s wide: event times

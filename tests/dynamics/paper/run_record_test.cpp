@@ -15,7 +15,7 @@
 #include "dynamics/body/summary_json.h"
 
 namespace frictionlab::dynamics::paper {
-namespace {
+namespace run_record_test {
 
 namespace fs = std::filesystem;
 

@@ -8,7 +8,7 @@
 #include <vector>
 
 namespace frictionlab::dynamics::paper {
-namespace {
+namespace spin_reversals_test {
 
 struct Series {
   std::vector<double> t, spin;

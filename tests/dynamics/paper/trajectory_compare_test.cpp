@@ -9,7 +9,7 @@
 #include <vector>
 
 namespace frictionlab::dynamics::paper {
-namespace {
+namespace trajectory_compare_test {
 
 // Linear interpolation of linear functions is exact up to rounding.
 constexpr double kRounding = 1e-13;

@@ -10,7 +10,7 @@
 #include "tests/dynamics/test_support.h"
 
 namespace frictionlab::dynamics::puck {
-namespace {
+namespace puck_equations_test {
 
 constexpr double kPi = std::numbers::pi;
 

@@ -12,7 +12,7 @@
 #include "uniform_circle_law.h"
 
 namespace frictionlab::dynamics::puck {
-namespace {
+namespace puck_run_test {
 
 constexpr double kPi = std::numbers::pi;
 constexpr double kG = 9.81;

@@ -13,7 +13,7 @@
 #include "uniform_circle_law.h"
 
 namespace frictionlab::dynamics::puck {
-namespace {
+namespace puck_scenario_test {
 
 const char* kDisk = R"(
 model = "puck"

@@ -16,7 +16,7 @@
 #include "friction/registry.h"
 
 namespace frictionlab::dynamics::puck {
-namespace {
+namespace puck_study_test {
 
 const std::filesystem::path kScenarios = std::filesystem::path(FRICTIONLAB_SOURCE_DIR) / "data" / "scenarios";
 

@@ -13,7 +13,7 @@
 #include "friction/batch.h"
 
 namespace frictionlab::dynamics::puck {
-namespace {
+namespace puck_trajectory_csv_test {
 
 namespace fs = std::filesystem;
 

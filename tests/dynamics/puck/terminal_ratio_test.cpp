@@ -9,7 +9,7 @@
 #include "uniform_circle_law.h"
 
 namespace frictionlab::dynamics::puck {
-namespace {
+namespace terminal_ratio_test {
 
 constexpr double kPi = std::numbers::pi;
 

@@ -5,7 +5,7 @@
 #include <gtest/gtest.h>
 
 namespace frictionlab::testing {
-namespace {
+namespace uniform_circle_law_test {
 
 friction::FrictionForces at(double u) {
   const UniformCircleTestLaw law;

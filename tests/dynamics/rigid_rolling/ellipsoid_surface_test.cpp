@@ -9,7 +9,7 @@
 #include "tests/support/eigen_near.h"
 
 namespace frictionlab::dynamics::rigid_rolling {
-namespace {
+namespace ellipsoid_surface_test {
 
 // Closed forms evaluated in double: a few ulps of the 0.2 m semi-axis.
 constexpr double kExact = 1e-15;  // m

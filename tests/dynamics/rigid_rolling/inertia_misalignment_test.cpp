@@ -6,7 +6,7 @@
 #include <cmath>
 
 namespace frictionlab::dynamics::rigid_rolling {
-namespace {
+namespace inertia_misalignment_test {
 
 TEST(DynRigidInertiaMisalignment, AngleRoundTrips) {
   for (double delta : {-0.7, -0.05, 0.0, 0.01, 0.3, 1.2}) {

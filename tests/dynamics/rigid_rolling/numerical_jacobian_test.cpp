@@ -9,7 +9,7 @@
 #include "tests/support/eigen_near.h"
 
 namespace frictionlab::dynamics::rigid_rolling {
-namespace {
+namespace numerical_jacobian_test {
 
 TEST(DynRigidNumericalJacobian, GammaRowsAreTheCrossProductMatrix) {
   // gamma' = gamma x omega is bilinear: d gamma'/d omega = [gamma]x, d gamma'/d gamma = -[omega]x,

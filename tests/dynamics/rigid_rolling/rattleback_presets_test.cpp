@@ -9,7 +9,7 @@
 #include "tests/support/eigen_near.h"
 
 namespace frictionlab::dynamics::rigid_rolling {
-namespace {
+namespace rattleback_presets_test {
 
 TEST(DynRigidRattlebackPresets, KaneLevinsonIsTheCitedBody) {
   const EllipsoidBody b = kane_levinson_rattleback();

@@ -9,7 +9,7 @@
 #include "dynamics/rigid_rolling/ellipsoid_surface.h"
 
 namespace frictionlab::dynamics::rigid_rolling {
-namespace {
+namespace rigid_body_test {
 
 RigidRollingBody valid_body() {
   RigidRollingBody b;

@@ -13,7 +13,7 @@
 #include "tests/support/eigen_near.h"
 
 namespace frictionlab::dynamics::rigid_rolling {
-namespace {
+namespace rolling_equations_test {
 
 // A uniform thin disk (A = m R^2/4, C = m R^2/2) of radius 5 cm with a 5 mm rim.
 RigidRollingBody rounded_disk() {

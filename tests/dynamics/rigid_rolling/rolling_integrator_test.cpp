@@ -12,7 +12,7 @@
 #include "dynamics/rigid_rolling/rounded_disk_surface.h"
 
 namespace frictionlab::dynamics::rigid_rolling {
-namespace {
+namespace rolling_integrator_test {
 
 // Energy over a run at rk8pd tolerances 1e-12: the local errors (<= 1e-12 per component and step)
 // add up over ~1e4 steps to ~1e-11 of the energy; 1e-9 leaves room and still fails for any

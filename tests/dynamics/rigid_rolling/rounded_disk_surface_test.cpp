@@ -10,7 +10,7 @@
 #include "tests/support/eigen_near.h"
 
 namespace frictionlab::dynamics::rigid_rolling {
-namespace {
+namespace rounded_disk_surface_test {
 
 constexpr double kExact = 1e-15;       // m: closed forms in double
 constexpr double kDifference = 1e-9;   // m/s: central differences, step 1e-6 (see the ellipsoid test)

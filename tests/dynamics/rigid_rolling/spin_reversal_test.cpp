@@ -10,7 +10,7 @@
 #include "dynamics/rigid_rolling/rattleback_presets.h"
 
 namespace frictionlab::dynamics::rigid_rolling {
-namespace {
+namespace spin_reversal_test {
 
 // The start of every reversal run: tilt amplitude of the growing mode, rad. Small, so that the
 // mode energy is a small fraction of the spin energy (the estimate's other expansion parameter).

@@ -12,7 +12,7 @@
 #include "dynamics/rigid_rolling/rolling_integrator.h"
 
 namespace frictionlab::dynamics::rigid_rolling {
-namespace {
+namespace steady_circle_test {
 
 constexpr double kPi = std::numbers::pi;
 

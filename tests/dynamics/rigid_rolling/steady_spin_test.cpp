@@ -16,7 +16,7 @@
 #include "tests/support/eigen_near.h"
 
 namespace frictionlab::dynamics::rigid_rolling {
-namespace {
+namespace steady_spin_test {
 
 // The central-difference Jacobian (step 1e-5 * max(1, |x|)) is good to ~1e-9 of the largest entry
 // (O(h^2) truncation of terms up to n^2 ~ 1e3, O(eps/h) rounding); 1e-7 of max|L| leaves room and

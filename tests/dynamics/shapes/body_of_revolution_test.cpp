@@ -15,7 +15,7 @@
 #include "shape_test_support.h"
 
 namespace frictionlab::dynamics::shapes {
-namespace {
+namespace body_of_revolution_test {
 
 using testing::any_tangents;
 using testing::random_directions;

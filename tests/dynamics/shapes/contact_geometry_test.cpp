@@ -9,7 +9,7 @@
 #include "tests/dynamics/test_support.h"
 
 namespace frictionlab::dynamics {
-namespace {
+namespace contact_geometry_test {
 
 // Newton is run to rounding; the contact point and radii come out within a few ulps of the body
 // size (1e-13 relative leaves room for the 1/g' amplification of the rounding in gamma3).

@@ -16,7 +16,7 @@
 #include "shape_test_support.h"
 
 namespace frictionlab::dynamics::shapes {
-namespace {
+namespace ellipsoid_test {
 
 using testing::any_tangents;
 using testing::random_directions;

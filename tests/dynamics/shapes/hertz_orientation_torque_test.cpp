@@ -14,7 +14,7 @@
 #include "shape_test_support.h"
 
 namespace frictionlab::dynamics::shapes {
-namespace {
+namespace hertz_orientation_torque_test {
 
 using testing::random_directions;
 

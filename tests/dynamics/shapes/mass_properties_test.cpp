@@ -6,7 +6,7 @@
 #include <numbers>
 
 namespace frictionlab::dynamics {
-namespace {
+namespace mass_properties_test {
 
 // The quadrature is exact for these polynomial integrands: only rounding remains.
 constexpr double kExactRelTol = 1e-12;

@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 namespace frictionlab::dynamics {
-namespace {
+namespace polynomial_test {
 
 // Root polishing leaves a few ulps; roots here are O(1).
 constexpr double kRootTol = 1e-13;

@@ -6,7 +6,7 @@
 #include <string>
 
 namespace frictionlab::dynamics {
-namespace {
+namespace profile_test {
 
 // Poles are polished roots of P: exact to a few ulps of the body length.
 constexpr double kPoleTol = 1e-14;

@@ -18,7 +18,7 @@
 #include "shape_test_support.h"
 
 namespace frictionlab::dynamics::shapes {
-namespace {
+namespace shape_contract_test {
 
 using testing::any_tangents;
 using testing::random_directions;

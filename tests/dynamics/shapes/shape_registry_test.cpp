@@ -13,7 +13,7 @@
 #include "friction/support/errors.h"
 
 namespace frictionlab::dynamics::shapes {
-namespace {
+namespace shape_registry_test {
 
 std::string error_of(const ShapeSpec& spec) {
   try {

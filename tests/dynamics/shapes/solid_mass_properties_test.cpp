@@ -12,7 +12,7 @@
 #include "tests/support/eigen_near.h"
 
 namespace frictionlab::dynamics::shapes {
-namespace {
+namespace solid_mass_properties_test {
 
 constexpr double kRoundingRelTol = 1e-14;
 

@@ -14,7 +14,7 @@
 #include "shape_test_support.h"
 
 namespace frictionlab::dynamics::shapes {
-namespace {
+namespace toroidal_disk_test {
 
 using testing::any_tangents;
 using testing::random_directions;

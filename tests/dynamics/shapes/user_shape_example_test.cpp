@@ -65,7 +65,7 @@ const sh::ShapeRegistrar ball_registrar{{
 }  // namespace user
 
 namespace frictionlab::dynamics::shapes {
-namespace {
+namespace user_shape_example_test {
 
 TEST(DynShapesUserExample, IsMadeByKindAndKeepsTheContract) {
   const auto ball = make_shape({"user-ball", {{"radius", {0.05}}}});

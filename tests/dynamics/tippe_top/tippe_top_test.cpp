@@ -23,7 +23,7 @@
 #include "slide_only_law.h"
 
 namespace frictionlab::dynamics::tippe_top {
-namespace {
+namespace tippe_top_test {
 
 const std::filesystem::path kScenario =
     std::filesystem::path(FRICTIONLAB_SOURCE_DIR) / "data" / "scenarios" / "tippe-top.toml";

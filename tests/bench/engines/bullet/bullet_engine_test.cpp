@@ -19,7 +19,7 @@
 #include <vector>
 
 namespace frictionlab::engines {
-namespace {
+namespace bullet_engine_test {
 
 using testing::body_z;
 using testing::lowest_point_slip;

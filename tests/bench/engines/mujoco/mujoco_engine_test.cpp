@@ -18,7 +18,7 @@
 #include "bench/engines/mujoco/mujoco_world.h"
 
 namespace frictionlab::engines {
-namespace {
+namespace mujoco_engine_test {
 
 using testing::lowest_point_slip;
 using testing::slope;

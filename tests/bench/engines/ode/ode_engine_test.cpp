@@ -14,7 +14,7 @@
 #include <vector>
 
 namespace frictionlab::engines {
-namespace {
+namespace ode_engine_test {
 
 using testing::slope;
 
