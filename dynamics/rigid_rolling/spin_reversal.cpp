@@ -1,6 +1,5 @@
 #include "dynamics/rigid_rolling/spin_reversal.h"
 
-#include <Eigen/Eigenvalues>
 #include <cmath>
 #include <complex>
 
@@ -28,17 +27,17 @@ PerturbedSteadySpin perturbed_steady_spin(const RigidRollingModel& model, const 
                                           double tilt) {
   if (!(std::isfinite(tilt) && tilt > 0.0)) throw support::invalid_value("tilt", tilt, "it must be finite and > 0 rad");
   if (!std::isfinite(spin)) throw support::invalid_value("spin", spin, "it must be finite (1/s)");
-  const Eigen::EigenSolver<SteadySpinMatrix> solver(steady_spin_matrix(linearised, spin));
+  const SteadySpinModes modes = steady_spin_modes(linearised, spin, true);
   int k = 0;
-  solver.eigenvalues().real().maxCoeff(&k);
-  Eigen::Vector4cd v = solver.eigenvectors().col(k);
+  modes.values.real().maxCoeff(&k);
+  Eigen::Vector4cd v = modes.vectors.col(k);
   const int big = std::abs(v(2)) >= std::abs(v(3)) ? 2 : 3;
   v *= std::polar(1.0, -std::arg(v(big))) * (tilt / std::abs(v(big)));
   const Eigen::Vector4d z = v.real();
   PerturbedSteadySpin out;
   out.state.omega = Eigen::Vector3d(z(0), z(1), spin);
   out.state.gamma = Eigen::Vector3d(z(2), z(3), 1.0).normalized();
-  out.growth_rate = solver.eigenvalues()(k).real();
+  out.growth_rate = modes.values(k).real();
   out.spin_energy = 0.5 * linearised.inertia(2, 2) * spin * spin;
   const RollingState steady{Eigen::Vector3d(0.0, 0.0, spin), Eigen::Vector3d::UnitZ()};
   out.mode_energy = model.energy(out.state) - model.energy(steady);

@@ -69,8 +69,16 @@ SteadySpinMatrix steady_spin_matrix(const SteadySpinBody& body, double n) {
   return l;
 }
 
+SteadySpinModes steady_spin_modes(const SteadySpinBody& body, double spin, bool vectors) {
+  const Eigen::EigenSolver<SteadySpinMatrix> solver(steady_spin_matrix(body, spin), vectors);
+  SteadySpinModes out;
+  out.values = solver.eigenvalues();
+  out.vectors = vectors ? Eigen::Matrix4cd(solver.eigenvectors()) : Eigen::Matrix4cd::Zero();
+  return out;
+}
+
 SteadySpinSpectrum steady_spin_eigenvalues(const SteadySpinBody& body, double spin) {
-  SteadySpinSpectrum ev = Eigen::EigenSolver<SteadySpinMatrix>(steady_spin_matrix(body, spin), false).eigenvalues();
+  SteadySpinSpectrum ev = steady_spin_modes(body, spin, false).values;
   std::sort(ev.begin(), ev.end(), [](const std::complex<double>& x, const std::complex<double>& y) {
     return x.imag() != y.imag() ? x.imag() < y.imag() : x.real() < y.real();
   });

@@ -55,6 +55,13 @@ using SteadySpinSpectrum = Eigen::Vector4cd;
 
 /// The closed-form matrix L(n) of z' = L z, z = (w1, w2, g1, g2); n the spin, 1/s.
 [[nodiscard]] SteadySpinMatrix steady_spin_matrix(const SteadySpinBody& body, double spin);
+/// Eigen's EigenSolver of L(n), in one place (it takes ~15 s to compile): the eigenvalues (1/s, in
+/// the solver's order) and, when `vectors`, the eigenvectors as columns.
+struct SteadySpinModes {
+  SteadySpinSpectrum values;
+  Eigen::Matrix4cd vectors;  ///< empty (all zero) unless asked for
+};
+[[nodiscard]] SteadySpinModes steady_spin_modes(const SteadySpinBody& body, double spin, bool vectors);
 /// Its eigenvalues, 1/s, sorted by imaginary part then real part (ascending).
 [[nodiscard]] SteadySpinSpectrum steady_spin_eigenvalues(const SteadySpinBody& body, double spin);
 /// max Re lambda(n), 1/s: the growth rate of small oscillations about steady spin n.
