@@ -41,6 +41,7 @@ struct StepDeleter {
 struct FreeStepper::Impl {
   gsl_odeiv2_system system{};
   std::unique_ptr<gsl_odeiv2_driver, DriverDeleter> driver;
+  long failed_before_reset = 0;  // GSL's count starts again at 0 with every reset
 };
 
 FreeStepper::FreeStepper(OdeRhs& rhs, int dimension, const IntegratorOptions& io, const double* abs_scale)
@@ -65,9 +66,15 @@ StepOutcome FreeStepper::advance(double& t, double t_end, double& h, double* x) 
 
 const double* FreeStepper::derivative_at_end() const { return impl_->driver->e->dydt_out; }
 
-long FreeStepper::failed_steps() const { return static_cast<long>(impl_->driver->e->failed_steps); }
+long FreeStepper::failed_steps() const {
+  return impl_->failed_before_reset + static_cast<long>(impl_->driver->e->failed_steps);
+}
 
-void FreeStepper::reset() { gsl_odeiv2_driver_reset(impl_->driver.get()); }
+void FreeStepper::reset() {
+  // gsl_odeiv2_driver_reset zeroes the evolve object's counts (gsl_odeiv2_evolve_reset).
+  impl_->failed_before_reset += static_cast<long>(impl_->driver->e->failed_steps);
+  gsl_odeiv2_driver_reset(impl_->driver.get());
+}
 
 struct SubStepper::Impl {
   std::string method;

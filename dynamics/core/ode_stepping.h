@@ -89,9 +89,10 @@ class FreeStepper {
   StepOutcome advance(double& t, double t_end, double& h, double* x);
   /// x' at the end of the last accepted step (valid after an accepted advance).
   [[nodiscard]] const double* derivative_at_end() const;
-  /// Trial steps GSL retried with a smaller size, so far.
+  /// Trial steps GSL retried with a smaller size, so far (since construction: resets keep the count).
   [[nodiscard]] long failed_steps() const;
   /// Forgets the stepper's history (multistep methods) after a discontinuous change of the state.
+  /// The count of failed_steps() goes on.
   void reset();
 
  private:

@@ -74,6 +74,44 @@ TEST(DynOdeStepping, ARefusedStateHalvesTheStepAndAStopFailsIt) {
   EXPECT_EQ(out.kind, StepOutcome::stopped_by_rhs);
 }
 
+// Advances `n` accepted steps from (t, x) with the trial size h0 (too large for the tolerance: GSL
+// rejects trial steps before it accepts one).
+void advance_steps(FreeStepper& stepper, double& t, double* x, double h0, int n) {
+  double h = h0;
+  for (int i = 0; i < n; ++i) ASSERT_EQ(stepper.advance(t, 50.0, h, x).kind, StepOutcome::accepted);
+}
+
+// GSL zeroes its count of failed steps when the driver is reset (the run loop resets at every jump
+// of the state or the mode): the count must go on. Expected: the counts of fresh steppers that take
+// the same two stretches (a reset stepper is a fresh one).
+TEST(DynOdeStepping, RejectedStepsAreCountedAcrossResets) {
+  Decay rhs;
+  const double scale[2] = {1.0, 1.0};
+  FreeStepper stepper(rhs, 2, tight(), scale);
+  double x[2] = {1.0, -2.0};
+  double t = 0.0;
+  advance_steps(stepper, t, x, 5.0, 3);
+  const double t_reset = t;
+  const double x_reset[2] = {x[0], x[1]};
+  stepper.reset();
+  advance_steps(stepper, t, x, 5.0, 3);
+
+  FreeStepper first(rhs, 2, tight(), scale);
+  double x1[2] = {1.0, -2.0};
+  double t1 = 0.0;
+  advance_steps(first, t1, x1, 5.0, 3);
+  ASSERT_EQ(t1, t_reset);
+  FreeStepper second(rhs, 2, tight(), scale);
+  double x2[2] = {x_reset[0], x_reset[1]};
+  double t2 = t_reset;
+  advance_steps(second, t2, x2, 5.0, 3);
+  ASSERT_EQ(t2, t);
+
+  EXPECT_GT(first.failed_steps(), 0);
+  EXPECT_GT(second.failed_steps(), 0);
+  EXPECT_EQ(stepper.failed_steps(), first.failed_steps() + second.failed_steps());
+}
+
 TEST(DynOdeStepping, ASubStepIsOneStepOfTheMethod) {
   Decay rhs;
   SubStepper sub("rk8pd", rhs, 2);

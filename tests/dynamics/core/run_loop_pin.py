@@ -18,6 +18,14 @@ This is a regression pin, not a physical check: it holds the numbers still. A ch
 them on purpose (a better law, a new integrator default) records the pin again, in its own commit,
 saying why. Only what the pin holds is compared: columns and keys added later are ignored.
 
+Re-recorded since: `summary:rejected_steps` of the 44 runs whose steps start afresh after a jump of
+the mode (the pucks, whose slip or spin stops and stays at zero; the bodies under `decoupled` and
+`decoupled:r_spin=0`, whose slip or spin is held at zero): GSL zeroes its count of rejected steps
+when the stepper is reset, and the summary had reported only the count since the last reset. The
+count now goes on (dynamics/core/ode_stepping.cpp, FreeStepper::reset;
+DynOdeStepping.RejectedStepsAreCountedAcrossResets); those rows were recorded again by the fixed
+build, every other value is the first recording's.
+
 What is pinned, per run: for each trajectory.csv column, the number of rows and a 64-bit FNV-1a
 hash of the column's cells as written (so bit for bit: the command writes 17 significant digits);
 every leaf of summary.json but the wall time and the scenario's path, as written by json.dumps.
