@@ -5,8 +5,8 @@
 // Exit codes:
 //   0  the run ended by t_end, rest or rolling;
 //   3  it stopped early (stagnation, chatter, law-pole, non-finite, law-error, integrator-failure,
-//      max-steps, interrupted by SIGINT, SIGTERM or SIGHUP): its files are written and the summary
-//      says why;
+//      max-steps, output-limit, flat-face: the model's point contact ends, interrupted by SIGINT,
+//      SIGTERM or SIGHUP): its files are written and the summary says why;
 //   1  an error: bad input (nothing run), or an output that could not be written (the run stopped
 //      there; what was written is valid). One line on stderr.
 
