@@ -29,7 +29,8 @@ def read_run(folder):
     columns = {name: np.array([float(r[i]) for r in body]) for i, name in enumerate(header)}
     missing = [c for c in ("t", "x", "y", "qw", "qx", "qy", "qz") if c not in columns]
     if missing:
-        raise ValueError(f"{path} has no pose columns {', '.join(missing)} (a run from before the pose)")
+        raise ValueError(f"{path} has no pose columns {', '.join(missing)} "
+                         "(a run with run.pose = false, or from before the pose)")
     summary = None
     if os.path.isfile(os.path.join(folder, "summary.json")):
         with open(os.path.join(folder, "summary.json"), encoding="utf-8") as f:

@@ -19,8 +19,8 @@ namespace {
 // products are scaled to unit length: e1 leaves the contact plane by the rounding of the slip,
 // which is large against U when the contact point's velocity is mostly normal (a landing, a deep
 // trial stage), and |(cos, sin)| then falls short of 1 by more than rounding.
-friction::PatchAngle patch_direction(const Eigen::Vector3d& major, const Eigen::Vector3d& e1,
-                                     const Eigen::Vector3d& e2) {
+inline friction::PatchAngle patch_direction(const Eigen::Vector3d& major, const Eigen::Vector3d& e1,
+                                            const Eigen::Vector3d& e2) {
   double c = major.dot(e1);
   double s = major.dot(e2);
   if (s < 0.0 || (s == 0.0 && c < 0.0)) {
@@ -32,6 +32,15 @@ friction::PatchAngle patch_direction(const Eigen::Vector3d& major, const Eigen::
   // e1 (nearly) along the normal, or not finite: the angle of the direction, atan2 as it was
   // (0 for a zero vector; NaN is refused by the law's input check).
   return friction::PatchAngle(friction::PatchAngle::from_direction(c, s).radians());
+}
+
+// BodyOnPlane::add_friction with the slip frame's e2 = gamma x e1 given (the right-hand side has it).
+inline void add_friction_in_frame(ContactState& c, const Eigen::Vector3d& e1, const Eigen::Vector3d& e2,
+                                  const friction::FrictionForces& f) {
+  c.friction = f;
+  const Eigen::Vector3d F = -c.friction.F1 * e1 - c.friction.F2 * e2;  // Eq. (7)
+  c.force += F;
+  c.torque += c.point.r.cross(F) - c.friction.M * c.gamma;
 }
 
 }  // namespace
@@ -153,17 +162,15 @@ void BodyOnPlane::contact_state(const StateVector& x, ContactState& c, bool with
   if (c.N > 0.0) {
     c.a = patch.a;
     c.b = patch.b;
-    if (with_friction) add_friction(c, c.e1, law_.evaluate({c.U, c.Omega, c.a, c.b, c.psi, c.N, plane_.k}));
+    if (with_friction) {
+      add_friction_in_frame(c, c.e1, e2, law_.evaluate({c.U, c.Omega, c.a, c.b, c.psi, c.N, plane_.k}));
+    }
   }
   c.slide_power = c.friction.F1 * c.U;
 }
 
 void BodyOnPlane::add_friction(ContactState& c, const Eigen::Vector3d& e1, const friction::FrictionForces& f) {
-  const Eigen::Vector3d e2 = c.gamma.cross(e1);
-  c.friction = f;
-  const Eigen::Vector3d F = -c.friction.F1 * e1 - c.friction.F2 * e2;  // Eq. (7)
-  c.force += F;
-  c.torque += c.point.r.cross(F) - c.friction.M * c.gamma;
+  add_friction_in_frame(c, e1, c.gamma.cross(e1), f);
 }
 
 friction::FrictionForces BodyOnPlane::law_at_slip(const ContactState& c, const Eigen::Vector3d& slip, double Omega,
@@ -183,7 +190,7 @@ void BodyOnPlane::operator()(double /*t*/, const StateVector& x, StateVector& dx
   derivatives(x, contact_state(x), dxdt);
 }
 
-void BodyOnPlane::derivatives(const StateVector& x, const ContactState& c, StateVector& dxdt) const {
+void BodyOnPlane::derivatives_without_pose(const StateVector& x, const ContactState& c, StateVector& dxdt) const {
   const Eigen::Vector3d v = velocity(x);
   const Eigen::Vector3d w = angular_velocity(x);
   velocity(dxdt) = -w.cross(v) - plane_.g * c.gamma + c.force / body_.mass;              // Eq. (2)
@@ -198,6 +205,12 @@ void BodyOnPlane::derivatives(const StateVector& x, const ContactState& c, State
   height(dxdt) = c.u.dot(c.gamma);                                                      // Eq. (5)
   slide_work(dxdt) = c.slide_power;
   spin_work(dxdt) = c.friction.M * c.Omega;
+}
+
+void BodyOnPlane::derivatives(const StateVector& x, const ContactState& c, StateVector& dxdt) const {
+  derivatives_without_pose(x, c, dxdt);
+  const Eigen::Vector3d v = velocity(x);
+  const Eigen::Vector3d w = angular_velocity(x);
   // The pose, not fed back: q' = q (0, omega)/2; X' = horizontal part of R(q) v.
   const auto q = orientation(x);
   orientation(dxdt) << -0.5 * (q[1] * w[0] + q[2] * w[1] + q[3] * w[2]), 0.5 * (q[0] * w[0] + q[2] * w[2] - q[3] * w[1]),

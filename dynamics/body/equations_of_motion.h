@@ -139,6 +139,7 @@ class BodyOnPlane {
  public:
   // The model interface of dynamics/run_loop.h.
   static constexpr int kSize = StateLayout::kSize;
+  static constexpr int kPoseFreeSize = StateLayout::kPoseFreeSize;
   using State = StateVector;
   using Contact = ContactState;
   using Mode = BodyMode;
@@ -153,6 +154,9 @@ class BodyOnPlane {
   /// dx/dt at x from its contact quantities `c` = contact_state(x) (for callers that inspect `c`
   /// first, e.g. dynamics/core/pole_watch.h): operator() is contact_state followed by this.
   void derivatives(const StateVector& x, const ContactState& c, StateVector& dxdt) const;
+  /// The same without the pose's rates: dxdt's components from StateLayout::kPoseFreeSize on are
+  /// left as they were (run.pose = false, dynamics/core/run_loop.h).
+  void derivatives_without_pose(const StateVector& x, const ContactState& c, StateVector& dxdt) const;
 
   /// The contact quantities at x (the same code path as operator()).
   [[nodiscard]] ContactState contact_state(const StateVector& x) const {
@@ -198,6 +202,10 @@ class BodyOnPlane {
   }
   void derivatives(const StateVector& x, const ContactState& c, const BodyMode& /*mode*/, StateVector& dxdt) const {
     derivatives(x, c, dxdt);
+  }
+  void derivatives_without_pose(const StateVector& x, const ContactState& c, const BodyMode& /*mode*/,
+                                StateVector& dxdt) const {
+    derivatives_without_pose(x, c, dxdt);
   }
   [[nodiscard]] double energy(const StateVector& x, const BodyMode& /*mode*/) const { return energy(x); }
   /// The shape coordinates of the contact for the watch of the law's poles (dynamics/core/pole_watch.h):

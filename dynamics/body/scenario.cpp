@@ -185,7 +185,7 @@ Scenario build(const toml::table& root, const std::string& source, const std::ve
 
   // [run]
   s.run = scenario_toml::read_run(root, scenario_toml::RunKeys::body);
-  check_planned_output(s.run.t_end, s.run.output_dt, s.run.max_output_bytes, trajectory_header().size(),
+  check_planned_output(s.run.t_end, s.run.output_dt, s.run.max_output_bytes, trajectory_header(s.run.pose).size(),
                        kMinTrajectoryRowBytes, "trajectory.csv");
 
   s.resolved_toml = resolved_text(root, s.name, s.law);

@@ -24,7 +24,7 @@ ScenarioRun run_scenario(const Scenario& scenario, const std::filesystem::path& 
   run.trajectory_csv = out_dir / "trajectory.csv";
   run.summary_json = out_dir / "summary.json";
   const auto max_bytes = static_cast<std::uint64_t>(scenario.run.max_output_bytes);
-  TrajectoryCsv csv(run.trajectory_csv, max_bytes);
+  TrajectoryCsv csv(run.trajectory_csv, max_bytes, scenario.run.pose);
   // Shadow laws (run.shadow): evaluated along the run beside its law, never changing it.
   ShadowOutput shadow(*law, scenario.run.shadow, motion_phase_rule(sys, scenario.run), out_dir / "shadow.csv", max_bytes);
   std::optional<ShadowObserver<BodyOnPlane>> shadow_observer;

@@ -28,6 +28,8 @@ struct StateLayout {
   static constexpr int kHeight = 9;
   static constexpr int kSlideWork = 10;
   static constexpr int kSpinWork = 11;
+  /// The components before the pose: they never read it (run.pose = false integrates only them).
+  static constexpr int kPoseFreeSize = 12;
   static constexpr int kPosition = 12;     ///< X, Y on the plane (world), m
   static constexpr int kOrientation = 14;  ///< unit quaternion w, x, y, z: body -> world
   static constexpr int kSize = 18;

@@ -46,10 +46,12 @@ support::Json summary_json(const Scenario& scenario, const RunSummary& s) {
                       {"omega", vec3(angular_velocity(x))},
                       {"v", vec3(velocity(x))},
                       {"eps", height(x)}};
-  // The final pose (dynamics/body/state.h): not fed back, carried beside the state.
-  const Eigen::Quaterniond q = orientation_quaternion(x);
-  j["final_state"]["position"] = support::Json::array({position(x)[0], position(x)[1]});
-  j["final_state"]["orientation"] = support::Json::array({q.w(), q.x(), q.y(), q.z()});
+  // The final pose (dynamics/body/state.h): not fed back, carried beside the state (run.pose).
+  if (scenario.run.pose) {
+    const Eigen::Quaterniond q = orientation_quaternion(x);
+    j["final_state"]["position"] = support::Json::array({position(x)[0], position(x)[1]});
+    j["final_state"]["orientation"] = support::Json::array({q.w(), q.x(), q.y(), q.z()});
+  }
   if (body.axisymmetric) {
     const AxisymmetricBody& a = *body.axisymmetric;
     j["body"] = {{"profile", scenario.body_spec.preset.empty() ? std::string("chi2") : scenario.body_spec.preset},

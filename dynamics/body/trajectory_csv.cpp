@@ -1,5 +1,7 @@
 #include "dynamics/body/trajectory_csv.h"
 
+#include <vector>
+
 #include "friction/support/number_format.h"
 
 namespace frictionlab::dynamics {
@@ -26,10 +28,16 @@ std::array<double, kTrajectoryColumns.size()> trajectory_row(const Sample& s) {
   return row;
 }
 
-std::string trajectory_header() { return trajectory_file_header(kTrajectoryColumns); }
+std::string trajectory_header(bool pose) {
+  std::vector<std::string_view> columns;
+  for (std::size_t i = 0; i < kTrajectoryColumns.size(); ++i) {
+    if (trajectory_column_written(i, pose)) columns.push_back(kTrajectoryColumns[i]);
+  }
+  return trajectory_file_header(columns);
+}
 
-TrajectoryCsv::TrajectoryCsv(const std::filesystem::path& file, std::uint64_t max_bytes)
-    : file_(file, trajectory_header(), max_bytes) {
+TrajectoryCsv::TrajectoryCsv(const std::filesystem::path& file, std::uint64_t max_bytes, bool pose)
+    : file_(file, trajectory_header(pose), max_bytes), pose_(pose) {
   line_.reserve(512);
 }
 
@@ -39,14 +47,15 @@ void TrajectoryCsv::sample(const Sample& s) {
   constexpr std::size_t kInContact = 24;  // kTrajectoryColumns[24] == "in_contact"
   static_assert(kTrajectoryColumns[kInContact] == "in_contact");
   for (std::size_t i = 0; i < row.size(); ++i) {
+    if (!trajectory_column_written(i, pose_)) continue;
     if (i == kInContact) {
       line_ += row[i] != 0.0 ? "1" : "0";
-      line_.push_back(i + 1 < row.size() ? ',' : '\n');
-      continue;
+    } else {
+      support::append_shortest(line_, row[i]);
     }
-    support::append_shortest(line_, row[i]);
-    line_.push_back(i + 1 < row.size() ? ',' : '\n');
+    line_.push_back(',');
   }
+  line_.back() = '\n';
   file_.append(line_);
   ++rows_;
 }

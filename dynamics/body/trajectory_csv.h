@@ -24,6 +24,7 @@
 //   x, y       m      position of the centre of mass on the plane (world axes; the pose,
 //                     dynamics/body/state.h: integrated beside the state, not fed back)
 //   qw, qx, qy, qz -  orientation, the unit quaternion turning body vectors into world ones
+//                     (x .. qz are left out of a run with run.pose = false)
 //
 // Numbers are written in the shortest form that reads back to the same double; a zero is written
 // "0" whatever its sign (support/number_format.h: the sign of a zero here is arithmetic residue,
@@ -55,13 +56,24 @@ inline constexpr std::array<std::string_view, 33> kTrajectoryColumns = {
     "b",  "psi",    "energy", "kinetic", "W_slide", "W_spin", "in_contact", "stick", "x",
     "y",  "qw",     "qx",     "qy",     "qz",     "slip_held"};
 
+/// The pose's columns, [kPoseColumnsBegin, kPoseColumnsEnd) of kTrajectoryColumns: x .. qz.
+inline constexpr std::size_t kPoseColumnsBegin = 26;
+inline constexpr std::size_t kPoseColumnsEnd = 32;
+static_assert(kTrajectoryColumns[kPoseColumnsBegin] == "x" && kTrajectoryColumns[kPoseColumnsEnd - 1] == "qz");
+
+/// Whether column i of kTrajectoryColumns is written: all of them, the pose's only with the pose
+/// (run.pose).
+[[nodiscard]] constexpr bool trajectory_column_written(std::size_t i, bool pose) {
+  return pose || i < kPoseColumnsBegin || i >= kPoseColumnsEnd;
+}
+
 /// One row: the values of kTrajectoryColumns at sample `s` (in_contact as 0 or 1, the quaternion normalised), as the CSV reads
 /// back (-0.0 as +0.0). The CSV writes these numbers; other sinks (the Python module's arrays) take
 /// them from here too, so they hold what the file holds, bit for bit.
 [[nodiscard]] std::array<double, kTrajectoryColumns.size()> trajectory_row(const Sample& s);
 
-/// The header line, "t,gamma1,...,in_contact\n".
-[[nodiscard]] std::string trajectory_header();
+/// The header line, "t,gamma1,...,slip_held\n" (without the pose's columns if `pose` is false).
+[[nodiscard]] std::string trajectory_header(bool pose = true);
 /// The smallest row: every value one character, each followed by ',' or the line's end.
 inline constexpr std::size_t kMinTrajectoryRowBytes = 2 * kTrajectoryColumns.size();
 
@@ -70,7 +82,8 @@ class TrajectoryCsv final : public Observer {
   /// Creates (or truncates) `file` and writes the header; `max_bytes` (0: no limit) is the most the
   /// file may hold, the header included. Throws support::OutputError if the file cannot be
   /// created, std::invalid_argument if the header alone passes `max_bytes`.
-  explicit TrajectoryCsv(const std::filesystem::path& file, std::uint64_t max_bytes = 0);
+  /// `pose` false leaves the pose's columns out (run.pose).
+  explicit TrajectoryCsv(const std::filesystem::path& file, std::uint64_t max_bytes = 0, bool pose = true);
   /// Appends one row. Throws OutputFailure if the file cannot be written, OutputLimitReached if
   /// the row would take it past its size limit (the row is not written).
   void sample(const Sample& s) override;
@@ -85,6 +98,7 @@ class TrajectoryCsv final : public Observer {
   TrajectoryFile file_;
   std::string line_;
   long rows_ = 0;
+  bool pose_;
 };
 
 }  // namespace frictionlab::dynamics

@@ -12,6 +12,15 @@
 // dynamics/puck/puck_equations.h for the two models):
 //
 //   M::State, M::kSize                       fixed-size Eigen vector of the state
+//
+// and may provide a pose that rides along (run.pose, docs/dynamics.md §7):
+//
+//   M::kPoseFreeSize                         the state's leading components that never read the
+//                                            rest (the pose); with run.pose = false the stepper
+//                                            integrates only those and the rest keeps x0's values
+//   void derivatives_without_pose(const State&, const Contact&, const Mode&, State&) const
+//                                            derivatives' leading kPoseFreeSize components, the
+//                                            same to the last bit (the others are not read)
 //   M::Contact                               the contact quantities at a state
 //   M::Mode                                  the discrete mode the right-hand side depends on
 //   void contact(const State&, const Mode&, Contact&) const      throws what the law throws
@@ -66,6 +75,18 @@ namespace frictionlab::dynamics {
 /// What a monitor's after_step decided.
 enum class After { go_on, jumped, stopped };
 
+/// The number of components the stepper integrates for `model` under run.pose (`pose`): all of
+/// them, or the leading ones that do not depend on the pose (M::kPoseFreeSize) when the model has
+/// a pose and it is off.
+template <class Model>
+constexpr int integrated_size(bool pose) {
+  if constexpr (requires { Model::kPoseFreeSize; }) {
+    return pose ? Model::kSize : Model::kPoseFreeSize;
+  } else {
+    return Model::kSize;
+  }
+}
+
 namespace run_loop_detail {
 
 // Why the last evaluation of the right-hand side failed.
@@ -82,14 +103,45 @@ class ModelRhs final : public OdeRhs {
   using Contact = typename Model::Contact;
   using Mode = typename Model::Mode;
 
-  ModelRhs(const Model& model, const PoleWatch* poles, const Mode& mode) : model_(model), poles_(poles), mode_(mode) {}
+  // `x0`: the run's initial state, whose pose the evaluations keep when the pose is not integrated.
+  ModelRhs(const Model& model, const PoleWatch* poles, const Mode& mode, const State& x0, bool pose)
+      : model_(model), poles_(poles), mode_(mode), last_x_(x0), size_(integrated_size<Model>(pose)) {}
 
+  // The stepper's state holds size() components: all (the pose integrated) or the leading ones.
   RhsStatus operator()(double t, const double* y, double* f) override {
+    if (size_ == Model::kSize) return evaluate<Model::kSize>(t, y, f);
+    return evaluate<integrated_size<Model>(false)>(t, y, f);
+  }
+
+  [[nodiscard]] int size() const { return size_; }
+
+  // The contact of the latest successful evaluation if it was at exactly `x` (bit for bit, in the
+  // integrated components), else null. The one-step methods evaluate x' at the end of every
+  // accepted step last (it is the next step's first stage, FreeStepper::derivative_at_end): the
+  // events between steps reuse that evaluation instead of computing the same contact again (one
+  // law evaluation a step).
+  [[nodiscard]] const Contact* contact_at(const State& x) const {
+    if (!has_last_ || std::memcmp(last_x_.data(), x.data(), sizeof(double) * static_cast<std::size_t>(size_)) != 0) {
+      return nullptr;
+    }
+    return &last_contact_;
+  }
+
+  long rhs_calls = 0;
+  RhsFailure last = RhsFailure::none;  // the outcome of the latest evaluation
+  int pole_output = -1;                // which denominator (PoleWatch::output_name) on a refusal
+  std::string message;                 // what went wrong, for the summary
+
+ private:
+  // One evaluation at a stepper state of N components (N fixed: the copies stay unrolled).
+  template <int N>
+  RhsStatus evaluate(double t, const double* y, double* f) {
+    using Part = Eigen::Matrix<double, N, 1>;
     ++rhs_calls;
     has_last_ = false;
     State& x = last_x_;
-    x = Eigen::Map<const State>(y);
-    if (!all_finite(x)) return fail_nonfinite(t, x);
+    x.template head<N>() = Eigen::Map<const Part>(y);
+    if (!all_finite(x.template head<N>())) return fail_nonfinite(t, x);
     State d;
     try {
       Contact& c = last_contact_;
@@ -102,7 +154,11 @@ class ModelRhs final : public OdeRhs {
           return RhsStatus::retry;
         }
       }
-      model_.derivatives(x, c, mode_, d);
+      if constexpr (N == Model::kSize) {
+        model_.derivatives(x, c, mode_, d);
+      } else {
+        model_.derivatives_without_pose(x, c, mode_, d);
+      }
     } catch (const std::exception& e) {
       // A trial stage of a step that reaches far past a landing sinks the body deep into the plane,
       // and its next stages grow without bound: to a state that is still finite (~1e165) but whose
@@ -120,29 +176,15 @@ class ModelRhs final : public OdeRhs {
       message = std::string("at t = ") + support::message_number(t) + " s: " + e.what();
       return RhsStatus::stop;
     }
-    if (!all_finite(d)) return fail_nonfinite(t, x);
+    const auto rate = d.template head<N>();
+    if (!all_finite(rate)) return fail_nonfinite(t, x);
     last = RhsFailure::none;
-    Eigen::Map<State> out(f);
-    out = d;
+    Eigen::Map<Part> out(f);
+    out = rate;
     has_last_ = true;
     return RhsStatus::ok;
   }
 
-  // The contact of the latest successful evaluation if it was at exactly `x` (bit for bit), else
-  // null. The one-step methods evaluate x' at the end of every accepted step last (it is the next
-  // step's first stage, FreeStepper::derivative_at_end): the events between steps reuse that
-  // evaluation instead of computing the same contact again (one law evaluation a step).
-  [[nodiscard]] const Contact* contact_at(const State& x) const {
-    if (!has_last_ || std::memcmp(last_x_.data(), x.data(), sizeof(double) * Model::kSize) != 0) return nullptr;
-    return &last_contact_;
-  }
-
-  long rhs_calls = 0;
-  RhsFailure last = RhsFailure::none;  // the outcome of the latest evaluation
-  int pole_output = -1;                // which denominator (PoleWatch::output_name) on a refusal
-  std::string message;                 // what went wrong, for the summary
-
- private:
   RhsStatus fail_nonfinite(double t, const State& x) {
     last = RhsFailure::nonfinite;
     message = "the right-hand side is not finite at t = " + support::message_number(t) + " s" +
@@ -154,8 +196,9 @@ class ModelRhs final : public OdeRhs {
   const PoleWatch* poles_;  // null when the law has none
   const Mode& mode_;
   bool has_last_ = false;   // the latest evaluation succeeded: last_x_, last_contact_ are its
-  State last_x_;
+  State last_x_;            // outside the integrated components: x0's
   Contact last_contact_;
+  int size_;                // the components the stepper integrates
 };
 
 }  // namespace run_loop_detail
@@ -186,8 +229,8 @@ typename Model::Summary run_model(const Model& model, const typename Model::Stat
 
   Mode mode{};
   PoleWatch poles(model.law(), model.friction_coefficient());
-  run_loop_detail::ModelRhs<Model> rhs(model, poles.active() ? &poles : nullptr, mode);
-  FreeStepper stepper(rhs, Model::kSize, io, abs_scale.data());
+  run_loop_detail::ModelRhs<Model> rhs(model, poles.active() ? &poles : nullptr, mode, x0, options.pose);
+  FreeStepper stepper(rhs, rhs.size(), io, abs_scale.data());
   StepSamplerOf<Model> sampler(io.method, model, mode,
                                observer ? observer->sample_accuracy() : SampleAccuracy::method_step);
 
@@ -218,7 +261,8 @@ typename Model::Summary run_model(const Model& model, const typename Model::Stat
     last_sample_t = time;
     return true;
   };
-  // x' at a state (zero if the model cannot be evaluated there: the next step reports it).
+  // x' at a state (zero if the model cannot be evaluated there: the next step reports it), zero
+  // outside the integrated components.
   const auto derivative_at = [&](const State& state) {
     State f = State::Zero();
     try {
@@ -228,6 +272,7 @@ typename Model::Summary run_model(const Model& model, const typename Model::Stat
     } catch (const std::exception&) {
       // The first integrator step reports it (law-error).
     }
+    f.tail(Model::kSize - rhs.size()).setZero();
     return f;
   };
 
@@ -278,7 +323,8 @@ typename Model::Summary run_model(const Model& model, const typename Model::Stat
       }
       step.t1 = t;
       step.x1 = x;
-      step.f1 = Eigen::Map<const State>(stepper.derivative_at_end());
+      // Outside the integrated components (a pose not integrated) x keeps x0's values, rate 0.
+      step.f1.head(rhs.size()) = Eigen::Map<const Eigen::VectorXd>(stepper.derivative_at_end(), rhs.size());
       // An event inside the step ends the step there.
       (void)monitor.locate(step, sampler, t, x, mode);
 

@@ -45,6 +45,13 @@ struct RunOptions {
   /// (docs/dynamics.md §5 "slip hold", dynamics/body/slip_hold.h); false: the integrator follows
   /// the stiff slip, and a discontinuous law chatters.
   bool slip_hold = true;
+  /// run.pose: the body's pose (its position on the plane and its orientation, dynamics/body/state.h)
+  /// integrated beside the state; false: not integrated (the pose columns of trajectory.csv and
+  /// the final pose of summary.json are left out), which saves the body 3-8 % of a run's time
+  /// (docs/benchmarks.md). The pose is never fed back: the rest of the state, its
+  /// steps and its events are the same to the last bit either way. A body's key only: the puck's
+  /// position and heading are its state.
+  bool pose = true;
   /// run.stick_hold_time, s, > 0: a run in stick ends "rolling" (stop_when_rolling) once stick has
   /// held that long; unset: the default of dynamics/core/stick_rule.h (scaled to the body).
   std::optional<double> stick_hold_time;

@@ -248,12 +248,13 @@ RunOptions read_run(const toml::table& root, RunKeys keys) {
     r.max_stagnant_steps = run.integer("max_stagnant_steps", r.max_stagnant_steps);
     r.stick = run.boolean("stick", r.stick);
     r.slip_hold = run.boolean("slip_hold", r.slip_hold);
+    r.pose = run.boolean("pose", r.pose);
     r.stick_hold_time = run.optional_number("stick_hold_time");
     r.chatter.max_steps = run.integer("max_chatter_steps", r.chatter.max_steps);
     r.chatter.step = run.optional_number("chatter_step");
     known.insert(known.end(), {"rest_kinetic_energy", "settle_time", "settle_normal_speed", "stop_when_rolling",
                                "max_stagnant_steps", "max_chatter_steps", "chatter_step", "stick",
-                               "slip_hold", "stick_hold_time"});
+                               "slip_hold", "stick_hold_time", "pose"});
   }
   run.check_no_unknown_keys(known);
   r.validate();

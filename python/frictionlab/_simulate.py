@@ -28,7 +28,7 @@ class SimulationResult:
         (N), M (N m), a, b (m), psi (rad), energy, kinetic, W_slide, W_spin (J), in_contact
         (bool), stick (bool: rolling without slip and spin, docs/dynamics.md §5), and the pose:
         x, y (m, the centre of mass on the plane, world axes), qw, qx, qy, qz (the orientation
-        quaternion, body to world). One element per sample (every run.output_dt seconds, and the
+        quaternion, body to world; left out with ``run.pose = false``). One element per sample (every run.output_dt seconds, and the
         final time).
     shadow : dict of str -> numpy.ndarray, or None
         With shadow laws (``shadow=[...]``), shadow.csv as arrays (docs/dynamics.md §10): t (s),

@@ -105,6 +105,7 @@ py::tuple run(const std::optional<std::string>& path, const std::string& text, c
   py::dict trajectory;
   auto& columns = collector.columns();
   for (std::size_t i = 0; i < kColumns; ++i) {
+    if (!dynamics::trajectory_column_written(i, scenario.run.pose)) continue;  // run.pose = false
     const py::str name(dynamics::kTrajectoryColumns[i].data(), dynamics::kTrajectoryColumns[i].size());
     py::array_t<double> column = to_array(std::move(columns[i]));
     if (dynamics::kTrajectoryColumns[i] == "in_contact" || dynamics::kTrajectoryColumns[i] == "stick" ||

@@ -224,3 +224,18 @@ def test_convex_scenarios_run(scenarios, scenario):
     # The centre of mass moves on the plane as its world velocity says (x' = (R(q) v)_x): a rolling
     # disk covers ground, the others at most drift.
     assert np.all(np.isfinite(result.trajectory["x"]))
+
+
+def test_without_the_pose_the_rest_is_the_same(scenarios):
+    """run.pose = false leaves the pose's columns out and every other column as it was, bit for bit."""
+    path = os.path.join(scenarios, "disk-spin-to-rest.toml")
+    with_pose = frictionlab.simulate(path, overrides={"run.t_end": 0.2})
+    without = frictionlab.simulate(path, overrides={"run.t_end": 0.2, "run.pose": False})
+    pose_columns = {"x", "y", "qw", "qx", "qy", "qz"}
+    assert pose_columns <= set(with_pose.trajectory)
+    assert not pose_columns & set(without.trajectory)
+    assert list(without.trajectory) == [c for c in with_pose.trajectory if c not in pose_columns]
+    for name, column in without.trajectory.items():
+        np.testing.assert_array_equal(column, with_pose.trajectory[name], err_msg=name)
+    assert "position" not in without.summary["final_state"]
+    assert without.summary["steps"] == with_pose.summary["steps"]

@@ -140,5 +140,97 @@ INSTANTIATE_TEST_SUITE_P(Laws, DynScenarioRunReproduces, ::testing::ValuesIn(law
                            return name;
                          });
 
+// run.pose = false: the stepper integrates the state without the pose, which is never fed back
+// (dynamics/core/run_loop.h). Everything else of the run is the same to the last bit: every row
+// of trajectory.csv without the pose's six columns, the step and evaluation counts, every event.
+// The runs go through bounces (the egg, the ellipsoid with the Hertz patch), slip holds (the
+// rattleback's reversal), stick and rest (the braked rattleback), the tippe top and the disk.
+struct PoseOffCase {
+  std::string scenario;
+  std::vector<std::string> overrides;
+};
+
+class DynScenarioRunWithoutPose : public ::testing::TestWithParam<PoseOffCase> {};
+
+std::vector<std::string> csv_lines(const std::string& text) {
+  std::vector<std::string> lines;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  return lines;
+}
+
+std::vector<std::string> csv_fields(const std::string& line) {
+  std::vector<std::string> fields;
+  std::istringstream in(line);
+  for (std::string f; std::getline(in, f, ',');) fields.push_back(f);
+  return fields;
+}
+
+TEST_P(DynScenarioRunWithoutPose, TheRestOfTheRunIsTheSameToTheLastBit) {
+  const PoseOffCase& param = GetParam();
+  const std::string file = std::string(FRICTIONLAB_SOURCE_DIR) + "/data/scenarios/" + param.scenario + ".toml";
+  std::vector<std::string> off_overrides = param.overrides;
+  off_overrides.push_back("run.pose=false");
+  const Scenario on = load_scenario(file, param.overrides);
+  const Scenario off = load_scenario(file, off_overrides);
+  ASSERT_TRUE(on.run.pose);
+  ASSERT_FALSE(off.run.pose);
+  const auto dir_on = fresh_dir("pose_on_" + param.scenario);
+  const auto dir_off = fresh_dir("pose_off_" + param.scenario);
+  const ScenarioRun a = run_scenario(on, dir_on);
+  const ScenarioRun b = run_scenario(off, dir_off);
+
+  EXPECT_EQ(a.summary.reason, b.summary.reason);
+  EXPECT_EQ(a.summary.steps, b.summary.steps);
+  EXPECT_EQ(a.summary.rejected_steps, b.summary.rejected_steps);
+  EXPECT_EQ(a.summary.rhs_calls, b.summary.rhs_calls);
+  EXPECT_EQ(a.summary.t_final, b.summary.t_final);
+  EXPECT_TRUE(a.summary.x_final.head<StateLayout::kPoseFreeSize>() ==
+              b.summary.x_final.head<StateLayout::kPoseFreeSize>());
+  EXPECT_GT(a.summary.steps, 100);
+
+  const std::vector<std::string> rows_on = csv_lines(slurp(a.trajectory_csv));
+  const std::vector<std::string> rows_off = csv_lines(slurp(b.trajectory_csv));
+  ASSERT_EQ(rows_on.size(), rows_off.size());
+  ASSERT_GT(rows_on.size(), 10u);
+  for (std::size_t r = 0; r < rows_on.size(); ++r) {
+    const std::vector<std::string> with_pose = csv_fields(rows_on[r]);
+    ASSERT_EQ(with_pose.size(), kTrajectoryColumns.size()) << "row " << r;
+    std::vector<std::string> expected;
+    for (std::size_t i = 0; i < with_pose.size(); ++i) {
+      if (i < kPoseColumnsBegin || i >= kPoseColumnsEnd) expected.push_back(with_pose[i]);
+    }
+    ASSERT_EQ(csv_fields(rows_off[r]), expected) << "row " << r << " of " << param.scenario;
+  }
+
+  const auto json_on = support::Json::parse(slurp(a.summary_json));
+  const auto json_off = support::Json::parse(slurp(b.summary_json));
+  EXPECT_TRUE(json_on["final_state"].contains("orientation"));
+  EXPECT_FALSE(json_off["final_state"].contains("orientation"));
+  EXPECT_FALSE(json_off["final_state"].contains("position"));
+  for (const char* key : {"gamma", "omega", "v", "eps", "t"}) {
+    EXPECT_EQ(json_on["final_state"][key], json_off["final_state"][key]) << key;
+  }
+  for (const char* key : {"stick", "slip_hold", "spin_hold", "termination", "energy_balance_error"}) {
+    EXPECT_EQ(json_on[key], json_off[key]) << key;
+  }
+  std::filesystem::remove_all(dir_on);
+  std::filesystem::remove_all(dir_off);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Scenarios, DynScenarioRunWithoutPose,
+    ::testing::Values(PoseOffCase{"egg-printed-a", {"run.t_end=3", "contact.law=exact"}},
+                      PoseOffCase{"ellipsoid-case-a", {"run.t_end=1", "contact.patch=hertz"}},
+                      PoseOffCase{"rattleback-reversal", {"run.t_end=2.65"}},
+                      PoseOffCase{"rattleback-braked", {"run.t_end=3"}},
+                      PoseOffCase{"tippe-top", {"run.t_end=2"}},
+                      PoseOffCase{"disk-spin-to-rest", {"run.t_end=1"}}),
+    [](const auto& p) {
+      std::string name = p.param.scenario;
+      std::replace(name.begin(), name.end(), '-', '_');
+      return name;
+    });
+
 }  // namespace
 }  // namespace frictionlab::dynamics

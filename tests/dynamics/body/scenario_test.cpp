@@ -185,6 +185,16 @@ TEST(DynScenario, ReadsTheChatterKeys) {
   });
 }
 
+// run.pose (dynamics/core/run_options.h): on unless set false; anything but a boolean named.
+TEST(DynScenario, ReadsThePoseSwitch) {
+  EXPECT_TRUE(parse_scenario(kGood, "test.toml").run.pose);
+  EXPECT_FALSE(parse_scenario(kGood, "test.toml", {"run.pose=false"}).run.pose);
+  EXPECT_TRUE(parse_scenario(replace(kGood, "t_end = 2", "t_end = 2\npose = true"), "test.toml").run.pose);
+  expect_errors({
+      {"pose not a boolean", kGood, {"run.pose=1"}, "run.pose must be true or false, got an integer 1"},
+  });
+}
+
 // Values outside the physically meaningful ranges (docs/dynamics.md §7) are rejected when the
 // scenario is read, naming the key, instead of failing far away ("friction input U = inf").
 // One case per rule; kGood is a 5 cm, 1 kg sphere.

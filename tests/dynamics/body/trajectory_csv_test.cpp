@@ -85,6 +85,38 @@ TEST(DynTrajectoryCsv, WritesTheHeaderAndOneWholeRowPerSample) {
   std::filesystem::remove(file);
 }
 
+// run.pose = false: the six columns of the pose (x, y, qw, qx, qy, qz) are left out of the header
+// and of every row; the other columns keep their order and values.
+TEST(DynTrajectoryCsv, WithoutThePoseItsSixColumnsAreLeftOut) {
+  const auto file = std::filesystem::temp_directory_path() / ("frictionlab_csv_nopose_" + std::to_string(::getpid()) + ".csv");
+  SampleData d;
+  d.c.gamma = Eigen::Vector3d::UnitZ();
+  d.c.N = 9.81;
+  d.c.in_contact = true;
+  position(d.x) << 0.25, -0.5;
+  {
+    TrajectoryCsv csv(file, 0, false);
+    csv.sample(d.at(0.1));
+    csv.close();
+  }
+  const std::string text = slurp(file);
+  const std::string header = text.substr(0, text.find('\n'));
+  EXPECT_EQ(header,
+            "t,gamma1,gamma2,gamma3,omega1,omega2,omega3,v1,v2,v3,eps,N,U,Omega,F1,F2,M,a,b,psi,energy,kinetic,"
+            "W_slide,W_spin,in_contact,stick,slip_held");
+  EXPECT_EQ(header + "\n", trajectory_header(false));
+  std::vector<std::string> fields;
+  std::istringstream row(text.substr(header.size() + 1));
+  for (std::string f; std::getline(row, f, ',');) fields.push_back(f);
+  ASSERT_EQ(fields.size(), kTrajectoryColumns.size() - 6);
+  EXPECT_EQ(fields[0], "0.1");
+  EXPECT_EQ(fields[11], "9.81");     // N
+  EXPECT_EQ(fields[24], "1");        // in_contact
+  EXPECT_EQ(fields[26], "0\n");      // slip_held, the last
+  EXPECT_EQ(text.find("0.25"), std::string::npos);  // no x
+  std::filesystem::remove(file);
+}
+
 TEST(DynTrajectoryCsv, AFailedWriteIsAnOutputFailure) {
   SampleData d;
   TrajectoryCsv csv("/dev/full");
